@@ -1,0 +1,85 @@
+// Monostatic 2D radar at the origin measuring range and bearing (SPEC
+// section 4; paper 000 eq. 3-4): h(X) = [sqrt(x^2+y^2), atan2(y, x)],
+// R = diag(sr^2, sb^2). Bearing is counter-clockwise from +x. residual()
+// is the only place a bearing innovation is wrapped to (-pi, pi].
+// Templated on the motion model only to read where x and y sit in its state.
+#pragma once
+
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+
+namespace kestrel {
+
+template <class Motion>
+struct PolarRadar {
+  using Scalar = typename Motion::Scalar;
+  static constexpr int kStateDim = Motion::kStateDim;
+  static constexpr int kMeasDim = 2;
+  static constexpr int kRange = 0;    ///< Index of range in a measurement, m.
+  static constexpr int kBearing = 1;  ///< Index of bearing in a measurement, rad.
+
+  using State = Vec<Scalar, kStateDim>;
+  using Measurement = Vec<Scalar, kMeasDim>;
+  using Jacobian = Mat<Scalar, kMeasDim, kStateDim>;
+  using NoiseCov = Mat<Scalar, kMeasDim, kMeasDim>;
+
+  Scalar sigma_range_m;      ///< sr, range noise standard deviation, m.
+  Scalar sigma_bearing_rad;  ///< sb, bearing noise standard deviation, rad.
+
+  /// h(X) = [r, b].
+  Measurement predict(const State& x) const {
+    using T = ScalarTraits<Scalar>;
+    const Scalar px = x(Motion::Layout::kX);
+    const Scalar py = x(Motion::Layout::kY);
+    Measurement z;
+    z << T::hypot(px, py), T::atan2(py, px);
+    return z;
+  }
+
+  /// dh/dX: dr/dx = x/r, dr/dy = y/r, db/dx = -y/r^2, db/dy = x/r^2; zero
+  /// elsewhere. At r = 0 the entries are non-finite and the filter refuses
+  /// the update with kNonFinite (the radar cannot see a target on itself).
+  Jacobian jacobian(const State& x) const {
+    using T = ScalarTraits<Scalar>;
+    const Scalar px = x(Motion::Layout::kX);
+    const Scalar py = x(Motion::Layout::kY);
+    const Scalar r = T::hypot(px, py);
+    const Scalar r2 = r * r;
+    Jacobian H = Jacobian::Zero();
+    H(kRange, Motion::Layout::kX) = px / r;
+    H(kRange, Motion::Layout::kY) = py / r;
+    H(kBearing, Motion::Layout::kX) = -py / r2;
+    H(kBearing, Motion::Layout::kY) = px / r2;
+    return H;
+  }
+
+  /// R = diag(sr^2, sb^2).
+  NoiseCov noise() const {
+    NoiseCov R = NoiseCov::Zero();
+    R(kRange, kRange) = sigma_range_m * sigma_range_m;
+    R(kBearing, kBearing) = sigma_bearing_rad * sigma_bearing_rad;
+    return R;
+  }
+
+  /// z - z_hat with the bearing difference wrapped to (-pi, pi].
+  Measurement residual(const Measurement& z, const Measurement& z_hat) const {
+    Measurement nu = z - z_hat;
+    nu(kBearing) = wrap_angle(nu(kBearing));
+    return nu;
+  }
+
+  /// Cartesian position of a measurement and its first-order covariance
+  /// J R J^T (J = d(x, y)/d(r, b)); used by two-point initiation.
+  void to_position(const Measurement& z, Vec<Scalar, 2>& p, Mat<Scalar, 2, 2>& P) const {
+    using T = ScalarTraits<Scalar>;
+    const Scalar c = T::cos(z(kBearing));
+    const Scalar s = T::sin(z(kBearing));
+    p << z(kRange) * c, z(kRange) * s;
+    Mat<Scalar, 2, 2> J;
+    J << c, -z(kRange) * s,
+         s, z(kRange) * c;
+    P = J * noise() * J.transpose();
+  }
+};
+
+}  // namespace kestrel

@@ -1,0 +1,84 @@
+// Constant-acceleration motion in the plane with white-jerk process noise
+// (SPEC section 3, CA-2D; R2-AEKF paper 000, section 2-1). State
+// X = [x vx ax y vy ay]^T: two independent 3-state axes, so F and Q are
+// block-diagonal blkdiag(F1, F1), blkdiag(Q1D, Q1D). The per-axis blocks are
+// public because the adaptive filter (R2-AEKF) scales Q per axis.
+#pragma once
+
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+
+namespace kestrel {
+
+template <class S>
+struct ConstantAcceleration2D {
+  using Scalar = S;
+  static constexpr int kStateDim = 6;
+  static constexpr int kAxisDim = 3;
+
+  /// Where each quantity sits in the state vector (PX4-style named layout).
+  struct Layout {
+    static constexpr int kX = 0;    ///< x position, m
+    static constexpr int kVx = 1;   ///< x velocity, m/s
+    static constexpr int kAx = 2;   ///< x acceleration, m/s^2
+    static constexpr int kY = 3;    ///< y position, m
+    static constexpr int kVy = 4;   ///< y velocity, m/s
+    static constexpr int kAy = 5;   ///< y acceleration, m/s^2
+  };
+  static_assert(Layout::kY == Layout::kX + kAxisDim, "axes are consecutive blocks");
+
+  using State = Vec<S, kStateDim>;
+  using Cov = Mat<S, kStateDim, kStateDim>;
+  using AxisMat = Mat<S, kAxisDim, kAxisDim>;
+
+  S qj;  ///< White-jerk power spectral density, m^2/s^5 (per axis).
+
+  /// F1(dt) = [[1, T, T^2/2], [0, 1, T], [0, 0, 1]].
+  AxisMat axis_transition(S dt) const {
+    AxisMat F1 = AxisMat::Identity();
+    F1(0, 1) = dt;
+    F1(0, 2) = dt * dt / S(2);
+    F1(1, 2) = dt;
+    return F1;
+  }
+
+  /// Q1D(dt) = qj * [[T^5/20, T^4/8, T^3/6], [T^4/8, T^3/3, T^2/2], [T^3/6, T^2/2, T]]
+  /// (continuous white jerk integrated over one step).
+  AxisMat axis_process_noise(S dt) const {
+    const S t2 = dt * dt;
+    const S t3 = t2 * dt;
+    const S t4 = t3 * dt;
+    const S t5 = t4 * dt;
+    AxisMat Q1;
+    Q1 << t5 / S(20), t4 / S(8), t3 / S(6),
+          t4 / S(8),  t3 / S(3), t2 / S(2),
+          t3 / S(6),  t2 / S(2), dt;
+    return Q1 * qj;
+  }
+
+  /// F(dt) = blkdiag(F1, F1).
+  Cov transition(S dt) const {
+    Cov F = Cov::Zero();
+    const AxisMat F1 = axis_transition(dt);
+    F.template block<kAxisDim, kAxisDim>(0, 0) = F1;
+    F.template block<kAxisDim, kAxisDim>(kAxisDim, kAxisDim) = F1;
+    return F;
+  }
+
+  /// Q(dt) = blkdiag(Q1D, Q1D).
+  Cov process_noise(S dt) const {
+    Cov Q = Cov::Zero();
+    const AxisMat Q1 = axis_process_noise(dt);
+    Q.template block<kAxisDim, kAxisDim>(0, 0) = Q1;
+    Q.template block<kAxisDim, kAxisDim>(kAxisDim, kAxisDim) = Q1;
+    return Q;
+  }
+
+  /// Noise-free propagation x(t + dt) = F(dt) x(t).
+  State propagate(const State& x, S dt) const { return transition(dt) * x; }
+
+  /// Jacobian of propagate() (the model is linear, so it is F).
+  Cov jacobian(const State& /*x*/, S dt) const { return transition(dt); }
+};
+
+}  // namespace kestrel

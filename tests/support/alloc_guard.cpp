@@ -1,0 +1,74 @@
+// Counting replacements of the global allocation functions. operator new is
+// replaced portably; malloc/calloc/realloc are interposed through glibc's
+// __libc_* entry points, except under AddressSanitizer, which must own them.
+#include "support/alloc_guard.hpp"
+
+#include <Eigen/Core>
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+namespace {
+std::atomic<std::size_t> g_allocations{0};
+}
+
+#if defined(__SANITIZE_ADDRESS__)
+#define KESTREL_TEST_INTERPOSE_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define KESTREL_TEST_INTERPOSE_MALLOC 0
+#endif
+#endif
+#ifndef KESTREL_TEST_INTERPOSE_MALLOC
+#if defined(__GLIBC__)
+#define KESTREL_TEST_INTERPOSE_MALLOC 1
+#else
+#define KESTREL_TEST_INTERPOSE_MALLOC 0
+#endif
+#endif
+
+#if KESTREL_TEST_INTERPOSE_MALLOC
+extern "C" {
+void* __libc_malloc(std::size_t);
+void* __libc_calloc(std::size_t, std::size_t);
+void* __libc_realloc(void*, std::size_t);
+void* malloc(std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_malloc(n);
+}
+void* calloc(std::size_t n, std::size_t s) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_calloc(n, s);
+}
+void* realloc(void* p, std::size_t n) {
+  g_allocations.fetch_add(1, std::memory_order_relaxed);
+  return __libc_realloc(p, n);
+}
+}
+#endif
+
+// operator new: counted here; under interposition the malloc it calls is
+// counted too, so count it only when malloc is not interposed.
+void* operator new(std::size_t n) {
+  if (!KESTREL_TEST_INTERPOSE_MALLOC) g_allocations.fetch_add(1, std::memory_order_relaxed);
+  void* p = std::malloc(n == 0 ? 1 : n);
+  if (p == nullptr) throw std::bad_alloc();
+  return p;
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace kestrel::test {
+
+AllocationGuard::AllocationGuard() : start_(g_allocations.load()) {
+  Eigen::internal::set_is_malloc_allowed(false);
+}
+AllocationGuard::~AllocationGuard() { Eigen::internal::set_is_malloc_allowed(true); }
+std::size_t AllocationGuard::allocations() const { return g_allocations.load() - start_; }
+std::size_t allocation_count() { return g_allocations.load(); }
+bool malloc_is_counted() { return KESTREL_TEST_INTERPOSE_MALLOC != 0; }
+
+}  // namespace kestrel::test
