@@ -26,6 +26,9 @@ class Ekf {
   using Scalar = typename Motion::Scalar;
   static constexpr int kStateDim = Motion::kStateDim;
   static constexpr int kMeasDim = Measurement::kMeasDim;
+  using MotionModel = Motion;
+  using MeasurementModel = Measurement;
+  using Layout = typename Motion::Layout;
   using State = typename Motion::State;
   using Cov = typename Motion::Cov;
   using MeasVec = typename Measurement::Measurement;
@@ -33,6 +36,7 @@ class Ekf {
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
 
+  Ekf() : Ekf(Motion{}, Measurement{}) {}
   Ekf(const Motion& motion, const Measurement& measurement)
       : motion_(motion), measurement_(measurement), x_(State::Zero()), P_(Cov::Identity()) {
     diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};

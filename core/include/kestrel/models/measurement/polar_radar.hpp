@@ -23,8 +23,8 @@ struct PolarRadar {
   using Jacobian = Mat<Scalar, kMeasDim, kStateDim>;
   using NoiseCov = Mat<Scalar, kMeasDim, kMeasDim>;
 
-  Scalar sigma_range_m;      ///< sr, range noise standard deviation, m.
-  Scalar sigma_bearing_rad;  ///< sb, bearing noise standard deviation, rad.
+  Scalar sigma_range_m{};      ///< sr, range noise standard deviation, m.
+  Scalar sigma_bearing_rad{};  ///< sb, bearing noise standard deviation, rad.
 
   /// h(X) = [r, b].
   Measurement predict(const State& x) const {

@@ -31,7 +31,7 @@ struct ConstantAcceleration2D {
   using Cov = Mat<S, kStateDim, kStateDim>;
   using AxisMat = Mat<S, kAxisDim, kAxisDim>;
 
-  S qj;  ///< White-jerk power spectral density, m^2/s^5 (per axis).
+  S qj{};  ///< White-jerk power spectral density, m^2/s^5 (per axis).
 
   /// F1(dt) = [[1, T, T^2/2], [0, 1, T], [0, 0, 1]].
   AxisMat axis_transition(S dt) const {

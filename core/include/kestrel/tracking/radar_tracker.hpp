@@ -1,0 +1,78 @@
+// The ready-made radar tracker of the walking skeleton: EKF on the CA-2D
+// model with the polar radar measurement (paper 000's EKF-CA), two-point
+// initiation, nearest-neighbour gating, M-of-N management. Boards and
+// kestrel-sim instantiate it through make_radar_tracker(); other filters
+// with the same models (R2-AEKF, UKF, ...) plug into the same Tracker.
+#pragma once
+
+#include <cstddef>
+
+#include "kestrel/filters/ekf.hpp"
+#include "kestrel/models/measurement/polar_radar.hpp"
+#include "kestrel/models/motion/constant_acceleration_2d.hpp"
+#include "kestrel/tracking/tracker.hpp"
+#include "kestrel/tracking/two_point_initiator.hpp"
+
+namespace kestrel {
+
+/// Parameters of the radar tracker, SI units. Defaults are SPEC section 9's
+/// S1/S2 sensor and paper 000's EKF-CA (qj = 1.6 m^2/s^5).
+struct RadarTrackerParams {
+  double sigma_range_m = 3.0;                  ///< sr.
+  double sigma_bearing_rad = 0.3 * 3.14159265358979323846 / 180.0;  ///< sb (0.30 deg).
+  double qj = 1.6;                             ///< White-jerk PSD, m^2/s^5.
+  double max_speed_mps = 1000.0;               ///< Two-point pairs faster than this are refused.
+  double init_accel_sigma_mps2 = 30.0;         ///< Initial acceleration sigma (about 3 g).
+  double max_range_m = 500000.0;               ///< Plots beyond this are out of range.
+  double max_position_variance_m2 = 1.0e6;     ///< Delete a track past a 1 km position sigma.
+  GateProbability gate = GateProbability::k999;  ///< Gate of confirmed and tentative tracks.
+  std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
+  std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
+  std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
+};
+
+template <class Scalar>
+using CaMotion = ConstantAcceleration2D<Scalar>;
+template <class Scalar>
+using CaPolarRadar = PolarRadar<CaMotion<Scalar>>;
+/// Paper 000's EKF-CA.
+template <class Scalar>
+using EkfCa = Ekf<CaMotion<Scalar>, CaPolarRadar<Scalar>>;
+
+template <class Filter, std::size_t kMaxTracks, std::size_t kMaxPlots>
+using RadarTracker =
+    Tracker<Filter, TwoPointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
+            kMaxTracks, kMaxPlots>;
+
+/// Tracker-level configuration from the parameters.
+template <class Scalar>
+TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
+  using T = ScalarTraits<Scalar>;
+  TrackerConfig<Scalar, 2> c;
+  c.gate_confirmed = p.gate;
+  c.gate_tentative = p.gate;
+  c.confirm_m = p.confirm_m;
+  c.confirm_n = p.confirm_n;
+  c.max_coast_misses = p.max_coast_misses;
+  c.max_position_variance_m2 = T::from_double(p.max_position_variance_m2);
+  c.z_min << Scalar(0), -T::pi();
+  c.z_max << T::from_double(p.max_range_m), T::pi();
+  return c;
+}
+
+/// The EKF-CA radar tracker with the given parameters.
+template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
+RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p) {
+  using T = ScalarTraits<Scalar>;
+  CaMotion<Scalar> motion;
+  motion.qj = T::from_double(p.qj);
+  CaPolarRadar<Scalar> radar;
+  radar.sigma_range_m = T::from_double(p.sigma_range_m);
+  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
+  TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
+      radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
+  return RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots>(EkfCa<Scalar>(motion, radar), init,
+                                                            radar_tracker_config<Scalar>(p));
+}
+
+}  // namespace kestrel

@@ -1,0 +1,52 @@
+// One track of the table and the report the tracker publishes for it
+// (SPEC section 7: stable id, status, age, hit/miss counters and the last
+// innovation statistics).
+#pragma once
+
+#include <cstdint>
+
+#include "kestrel/tracking/track_table.hpp"
+
+namespace kestrel {
+
+template <class Filter>
+struct Track {
+  using Scalar = typename Filter::Scalar;
+  using MeasVec = typename Filter::MeasVec;
+
+  Filter filter{};                     ///< Estimator; valid once `initialised`.
+  std::uint32_t id = 0;                ///< Stable for the track's life, never 0.
+  TrackStatus status = TrackStatus::kFree;
+  bool initialised = false;            ///< false: a seed holding one measurement only.
+  std::int64_t t_us = 0;               ///< Time of the filter state (or of the seed), us.
+  MeasVec seed{};                      ///< First measurement while not initialised.
+  std::uint16_t age = 0;               ///< Frames since the track started.
+  std::uint16_t hits = 0;              ///< Measurements associated in total.
+  std::uint16_t misses = 0;            ///< Consecutive frames without a measurement.
+  std::uint8_t history = 0;            ///< Association history, bit 0 = latest frame.
+  bool associated = false;             ///< A measurement was used in the latest frame.
+  std::int16_t measurement_index = -1; ///< Its index in the latest scan, -1 if none.
+  Scalar nis{};                        ///< nu^T S^-1 nu of the latest association.
+};
+
+/// What the tracker publishes per reported track and frame.
+template <class Filter>
+struct TrackReport {
+  using Scalar = typename Filter::Scalar;
+  using State = typename Filter::State;
+  using Cov = typename Filter::Cov;
+
+  std::int64_t t_us = 0;               ///< Frame time, microseconds.
+  std::uint32_t track_id = 0;          ///< Stable track id.
+  TrackStatus status = TrackStatus::kFree;
+  std::uint16_t age = 0;               ///< Frames since start.
+  std::uint16_t hits = 0;              ///< Measurements associated in total.
+  std::uint16_t misses = 0;            ///< Consecutive misses.
+  bool associated = false;             ///< Updated in this frame.
+  std::int16_t measurement_index = -1; ///< Scan entry used in this frame, -1 if none.
+  Scalar nis{};                        ///< NIS of this frame's association (if associated).
+  State x{};                           ///< State estimate, motion-model layout.
+  Cov P{};                             ///< State covariance.
+};
+
+}  // namespace kestrel

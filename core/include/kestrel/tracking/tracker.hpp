@@ -1,0 +1,371 @@
+// The real-time loop of SPEC section 8: one call per frame,
+//   step(scan): validate -> predict every track to the frame time -> gate and
+//   associate (nearest neighbour, one measurement per track, confirmed tracks
+//   first) -> update -> initiate from unused measurements -> M-of-N
+//   confirmation and deletion -> reports.
+// Work is bounded by the capacities: kMaxTracks x kMaxMeasurements
+// innovations per frame at most, no allocation, no recursion.
+// A frame that fails validation (count over capacity, NaN/Inf, out of the
+// configured measurement box, time going backwards) is refused with its
+// status before anything changes, so nothing already tracked is lost.
+#pragma once
+
+#include <bit>
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "kestrel/association/gate.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
+#include "kestrel/tracking/measurement_scan.hpp"
+#include "kestrel/tracking/track.hpp"
+#include "kestrel/tracking/track_table.hpp"
+
+namespace kestrel {
+
+/// What the tracker needs from a filter (EKF, R2-AEKF, UKF, ... all fit).
+template <class F>
+concept TrackingFilter = requires(F& f, const F& cf, const typename F::State& x,
+                                  const typename F::Cov& P, const typename F::MeasVec& z,
+                                  typename F::Scalar dt) {
+  { f.reset(x, P) } -> std::same_as<Status>;
+  { f.predict(dt) } -> std::same_as<Status>;
+  { cf.innovation(z) } -> std::same_as<Innovation<typename F::Scalar, F::kMeasDim>>;
+  { f.update(z) } -> std::same_as<Status>;
+  { cf.x() } -> std::convertible_to<typename F::State>;
+  { cf.P() } -> std::convertible_to<typename F::Cov>;
+};
+
+/// Track-management and validation parameters.
+template <class Scalar, int kMeasDim>
+struct TrackerConfig {
+  GateProbability gate_confirmed = GateProbability::k99;  ///< Gate of confirmed tracks.
+  GateProbability gate_tentative = GateProbability::k99;  ///< Gate of tentative tracks.
+  std::uint8_t confirm_m = 2;          ///< Confirm with M associations ...
+  std::uint8_t confirm_n = 3;          ///< ... in the last N frames (N <= 8).
+  std::uint16_t max_coast_misses = 5;  ///< Delete a confirmed track after this many misses in a row.
+  Scalar max_position_variance_m2{};   ///< Delete when var(x)+var(y) exceeds this, m^2.
+  Vec<Scalar, kMeasDim> z_min{};       ///< Smallest valid measurement, per channel.
+  Vec<Scalar, kMeasDim> z_max{};       ///< Largest valid measurement, per channel.
+  bool report_tentative = false;       ///< Also report tentative (initialised) tracks.
+};
+
+/// What one step did (readable after step()).
+struct StepStats {
+  Status status = Status::kOk;     ///< Return value of the step.
+  std::uint16_t measurements = 0;  ///< Measurements in the frame.
+  std::uint16_t associated = 0;    ///< Used to update an existing track.
+  std::uint16_t initiated = 0;     ///< Turned a seed into an initialised track.
+  std::uint16_t seeded = 0;        ///< Started a new seed.
+  std::uint16_t confirmed = 0;     ///< Tracks confirmed in this frame.
+  std::uint16_t deleted = 0;       ///< Tracks deleted in this frame.
+  std::uint16_t dropped = 0;       ///< Unused measurements with no free slot to seed.
+  std::uint16_t filter_failures = 0;  ///< Predict/update refused by a filter.
+};
+
+template <TrackingFilter Filter, class Initiator, std::size_t kMaxTracks, std::size_t kMaxMeasurements>
+class Tracker {
+ public:
+  using Scalar = typename Filter::Scalar;
+  static constexpr int kMeasDim = Filter::kMeasDim;
+  using MeasVec = typename Filter::MeasVec;
+  using Scan = MeasurementScan<Scalar, kMeasDim, kMaxMeasurements>;
+  using TrackT = Track<Filter>;
+  using Report = TrackReport<Filter>;
+  using Table = TrackTable<TrackT, kMaxTracks>;
+  using Config = TrackerConfig<Scalar, kMeasDim>;
+  static_assert(kMaxMeasurements < 32768, "measurement indices are int16");
+
+  /// @param prototype a filter holding the model parameters every track copies.
+  Tracker(const Filter& prototype, const Initiator& initiator, const Config& config)
+      : initiator_(initiator), config_(config) {
+    prototype_.filter = prototype;
+    gate_confirmed_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_confirmed);
+    gate_tentative_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_tentative);
+  }
+
+  /// Process one frame.
+  /// @return kOk; kMalformedFrame (count over capacity); kNonFinite; kOutOfRange
+  ///         (a measurement outside [z_min, z_max]); kTimeWentBackwards.
+  ///         On any non-kOk status the tracker is unchanged and reports() is empty.
+  [[nodiscard]] Status step(const Scan& scan) {
+    stats_ = StepStats{};
+    report_count_ = 0;
+    const Status valid = validate(scan);
+    if (valid != Status::kOk) {
+      stats_.status = valid;
+      ++rejected_[static_cast<std::size_t>(valid)];
+      return valid;
+    }
+    have_time_ = true;
+    last_t_us_ = scan.t_us;
+    stats_.measurements = static_cast<std::uint16_t>(scan.count);
+
+    bool used[kMaxMeasurements] = {};
+    bool hit[kMaxTracks] = {};
+    bool existed[kMaxTracks] = {};
+
+    predict_all(scan.t_us, existed);
+    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, used, hit);
+    associate(scan, TrackStatus::kTentative, gate_tentative_, used, hit);
+    initiate_from_seeds(scan, used, hit);
+    seed_new(scan, used, hit);
+    manage(existed, hit);
+    build_reports(scan.t_us);
+    return Status::kOk;
+  }
+
+  /// Reports of the last successful step (confirmed tracks, plus tentative
+  /// initialised ones if config.report_tentative).
+  std::span<const Report> reports() const { return {reports_, report_count_}; }
+  const StepStats& last_step() const { return stats_; }
+  const Table& tracks() const { return table_; }
+  const Config& config() const { return config_; }
+  /// Frames refused so far, per status.
+  std::uint32_t rejected(Status s) const { return rejected_[static_cast<std::size_t>(s)]; }
+
+ private:
+  Status validate(const Scan& scan) const {
+    if (scan.count > kMaxMeasurements) return Status::kMalformedFrame;
+    if (have_time_ && scan.t_us < last_t_us_) return Status::kTimeWentBackwards;
+    for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
+      if (i >= scan.count) break;
+      if (!all_finite(scan.z[i])) return Status::kNonFinite;
+    }
+    for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
+      if (i >= scan.count) break;
+      for (int c = 0; c < kMeasDim; ++c) {
+        if (scan.z[i](c) < config_.z_min(c) || scan.z[i](c) > config_.z_max(c)) {
+          return Status::kOutOfRange;
+        }
+      }
+    }
+    return Status::kOk;
+  }
+
+  static Scalar seconds(std::int64_t dt_us) {
+    return ScalarTraits<Scalar>::from_ratio(dt_us, 1000000);
+  }
+
+  void predict_all(std::int64_t t_us, bool (&existed)[kMaxTracks]) {
+    for (std::size_t i = 0; i < kMaxTracks; ++i) {
+      if (!table_.active(i)) continue;
+      existed[i] = true;
+      TrackT& tr = table_[i];
+      tr.associated = false;
+      tr.measurement_index = -1;
+      if (!tr.initialised) continue;  // a seed keeps its own time
+      if (tr.filter.predict(seconds(t_us - tr.t_us)) != Status::kOk) {
+        ++stats_.filter_failures;
+        continue;  // counted as a miss in manage(); deleted if it keeps failing
+      }
+      tr.t_us = t_us;
+    }
+  }
+
+  /// Nearest neighbour: each track of `status` takes the unused measurement
+  /// with the smallest d2 inside its gate. Order: table order, which is age
+  /// order for a table that only grows, so older tracks choose first.
+  void associate(const Scan& scan, TrackStatus status, const EllipsoidalGate<Scalar, kMeasDim>& gate,
+                 bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+    for (std::size_t i = 0; i < kMaxTracks; ++i) {
+      if (!table_.active(i) || table_[i].status != status || !table_[i].initialised) continue;
+      TrackT& tr = table_[i];
+      if (tr.t_us != scan.t_us) continue;  // prediction failed this frame
+      std::size_t best = kMaxMeasurements;
+      Scalar best_d2{};
+      for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
+        if (j >= scan.count) break;
+        if (used[j]) continue;
+        const auto in = tr.filter.innovation(scan.z[j]);
+        if (!gate.accepts(in)) continue;
+        if (best == kMaxMeasurements || in.d2 < best_d2) {
+          best = j;
+          best_d2 = in.d2;
+        }
+      }
+      if (best == kMaxMeasurements) continue;
+      if (tr.filter.update(scan.z[best]) != Status::kOk) {
+        ++stats_.filter_failures;
+        continue;
+      }
+      used[best] = true;
+      hit[i] = true;
+      tr.associated = true;
+      tr.measurement_index = static_cast<std::int16_t>(best);
+      tr.nis = best_d2;
+      ++stats_.associated;
+    }
+  }
+
+  /// A seed pairs with the unused measurement of lowest pairing cost.
+  void initiate_from_seeds(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+    if constexpr (!Initiator::kSinglePoint) {
+      for (std::size_t i = 0; i < kMaxTracks; ++i) {
+        if (!table_.active(i) || table_[i].initialised) continue;
+        TrackT& tr = table_[i];
+        const Scalar dt = seconds(scan.t_us - tr.t_us);
+        std::size_t best = kMaxMeasurements;
+        Scalar best_cost{};
+        for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
+          if (j >= scan.count) break;
+          if (used[j]) continue;
+          const auto cost = initiator_.pair_cost(tr.seed, scan.z[j], dt);
+          if (!cost.ok()) continue;
+          if (best == kMaxMeasurements || cost.value() < best_cost) {
+            best = j;
+            best_cost = cost.value();
+          }
+        }
+        if (best == kMaxMeasurements) continue;
+        typename Filter::State x;
+        typename Filter::Cov P;
+        if (initiator_.initiate(tr.seed, scan.z[best], dt, x, P) != Status::kOk ||
+            tr.filter.reset(x, P) != Status::kOk) {
+          ++stats_.filter_failures;
+          continue;
+        }
+        used[best] = true;
+        hit[i] = true;
+        tr.initialised = true;
+        tr.t_us = scan.t_us;
+        tr.associated = true;
+        tr.measurement_index = static_cast<std::int16_t>(best);
+        ++stats_.initiated;
+      }
+    }
+  }
+
+  /// Every measurement still unused starts a seed (or, for a single-point
+  /// initiator, an initialised tentative track).
+  void seed_new(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+    for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
+      if (j >= scan.count) break;
+      if (used[j]) continue;
+      const std::size_t slot = table_.allocate(prototype_);
+      if (slot == kMaxTracks) {
+        ++stats_.dropped;
+        continue;
+      }
+      TrackT& tr = table_[slot];
+      tr.t_us = scan.t_us;
+      tr.associated = true;
+      tr.measurement_index = static_cast<std::int16_t>(j);
+      if constexpr (Initiator::kSinglePoint) {
+        typename Filter::State x;
+        typename Filter::Cov P;
+        if (initiator_.initiate(scan.z[j], x, P) != Status::kOk || tr.filter.reset(x, P) != Status::kOk) {
+          table_.release(slot);
+          ++stats_.filter_failures;
+          continue;
+        }
+        tr.initialised = true;
+      } else {
+        tr.seed = scan.z[j];
+        tr.initialised = false;
+      }
+      used[j] = true;
+      hit[slot] = true;
+      ++stats_.seeded;
+    }
+  }
+
+  Scalar position_variance(const typename Filter::Cov& P) const {
+    using L = typename Filter::Layout;
+    if constexpr (requires { L::kX; L::kY; L::kZ; }) {
+      return P(L::kX, L::kX) + P(L::kY, L::kY) + P(L::kZ, L::kZ);
+    } else if constexpr (requires { L::kX; L::kY; }) {
+      return P(L::kX, L::kX) + P(L::kY, L::kY);
+    } else {
+      return P(0, 0);
+    }
+  }
+
+  /// M-of-N confirmation (the seed frame counts as the first hit); deletion of seeds that found no partner, of
+  /// tentative tracks that can no longer reach M, of confirmed tracks after
+  /// max_coast_misses, and of any track whose position variance exceeds
+  /// the limit.
+  void manage(const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks]) {
+    const std::uint8_t window =
+        static_cast<std::uint8_t>(config_.confirm_n >= 8 ? 0xFFu : (1u << config_.confirm_n) - 1u);
+    for (std::size_t i = 0; i < kMaxTracks; ++i) {
+      if (!table_.active(i)) continue;
+      TrackT& tr = table_[i];
+      if (existed[i]) {
+        tr.history = static_cast<std::uint8_t>((tr.history << 1) | (hit[i] ? 1u : 0u));
+        tr.age = static_cast<std::uint16_t>(tr.age < UINT16_MAX ? tr.age + 1 : tr.age);
+      } else {
+        tr.history = 1;  // created this frame: its first hit
+      }
+      if (hit[i]) {
+        tr.misses = 0;
+        tr.hits = static_cast<std::uint16_t>(tr.hits < UINT16_MAX ? tr.hits + 1 : tr.hits);
+      } else {
+        tr.misses = static_cast<std::uint16_t>(tr.misses < UINT16_MAX ? tr.misses + 1 : tr.misses);
+      }
+
+      bool remove = false;
+      if (!tr.initialised) {
+        remove = existed[i] && !hit[i];  // a seed lives one frame
+      } else if (tr.status == TrackStatus::kTentative) {
+        // The window is anchored at the track's start: confirm once M of its
+        // frames so far are hits; give up when N frames passed without that,
+        // or after more than N - M misses in a row (M can no longer be met).
+        const int recent = std::popcount(static_cast<unsigned>(tr.history & window));
+        if (recent >= config_.confirm_m) {
+          tr.status = TrackStatus::kConfirmed;
+          ++stats_.confirmed;
+        } else if (tr.age + 1 >= config_.confirm_n || tr.misses > config_.confirm_n - config_.confirm_m) {
+          remove = true;
+        }
+      } else if (tr.misses > config_.max_coast_misses) {
+        remove = true;
+      }
+      if (tr.initialised && position_variance(tr.filter.P()) > config_.max_position_variance_m2) {
+        remove = true;
+      }
+      if (remove) {
+        table_.release(i);
+        ++stats_.deleted;
+      }
+    }
+  }
+
+  void build_reports(std::int64_t t_us) {
+    for (std::size_t i = 0; i < kMaxTracks; ++i) {
+      if (!table_.active(i) || !table_[i].initialised) continue;
+      const TrackT& tr = table_[i];
+      if (tr.status != TrackStatus::kConfirmed && !config_.report_tentative) continue;
+      Report& r = reports_[report_count_++];
+      r.t_us = t_us;
+      r.track_id = tr.id;
+      r.status = tr.status;
+      r.age = tr.age;
+      r.hits = tr.hits;
+      r.misses = tr.misses;
+      r.associated = tr.associated;
+      r.measurement_index = tr.measurement_index;
+      r.nis = tr.nis;
+      r.x = tr.filter.x();
+      r.P = tr.filter.P();
+    }
+  }
+
+  Initiator initiator_;
+  Config config_;
+  TrackT prototype_{};
+  EllipsoidalGate<Scalar, kMeasDim> gate_confirmed_{};
+  EllipsoidalGate<Scalar, kMeasDim> gate_tentative_{};
+  Table table_{};
+  Report reports_[kMaxTracks]{};
+  std::size_t report_count_ = 0;
+  StepStats stats_{};
+  std::uint32_t rejected_[kStatusCount] = {};
+  std::int64_t last_t_us_ = 0;
+  bool have_time_ = false;
+};
+
+}  // namespace kestrel
