@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Kestrel's two entry points on a fresh Debian machine (README quick start):
+#   bash run.sh sim    install what is missing, build host-release, run
+#                      kestrel-sim on the default suite -> results/
+#   bash run.sh test   install what is missing, build host-release, run the
+#                      whole CTest suite (including the cross builds)
+# .ci/run calls `bash run.sh test`.
+set -euo pipefail
+cd "$(dirname "$0")"
+
+# Debian packages the project needs. Nothing else is downloaded.
+PACKAGES=(
+  cmake make g++ git
+  libeigen3-dev catch2
+  gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib
+  g++-riscv64-linux-gnu
+  libbenchmark-dev libcli11-dev nlohmann-json3-dev
+  python3 python3-matplotlib
+  valgrind
+)
+
+install_deps() {
+  local missing=()
+  for p in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]})); then
+    echo "run.sh: installing ${missing[*]}" >&2
+    local sudo=()
+    [[ $(id -u) -eq 0 ]] || sudo=(sudo)
+    "${sudo[@]}" apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+  fi
+}
+
+njobs() { nproc 2>/dev/null || echo 2; }
+
+build_host() {
+  cmake --preset host-release >/dev/null
+  cmake --build --preset host-release -j "$(njobs)"
+}
+
+case "${1:-}" in
+  sim)
+    install_deps
+    build_host
+    ./build/host-release/host_sim/kestrel-sim suite --out results "${@:2}"
+    ;;
+  test)
+    install_deps
+    build_host
+    ctest --preset host-release "${@:2}"
+    ;;
+  *)
+    echo "usage: bash run.sh sim|test [extra args]" >&2
+    exit 2
+    ;;
+esac
