@@ -29,6 +29,10 @@ enum class Status : std::uint8_t {
   kNotInitialised,       ///< Filter or track used before it holds a state.
   // Track management.
   kTableFull,            ///< No free slot in a static table.
+  // Solvers (multilateration).
+  kUnderdetermined,      ///< Fewer usable measurements than the unknowns need.
+  kNoConvergence,        ///< Iteration cap reached, or no solution explains the data.
+  kAmbiguous,            ///< Two or more distinct solutions fit the data equally well.
 };
 
 /// Short stable name of a status, for host logs and test messages.
@@ -51,12 +55,15 @@ constexpr const char* to_string(Status s) {
     case Status::kNotPositiveDefinite: return "not_positive_definite";
     case Status::kNotInitialised: return "not_initialised";
     case Status::kTableFull: return "table_full";
+    case Status::kUnderdetermined: return "underdetermined";
+    case Status::kNoConvergence: return "no_convergence";
+    case Status::kAmbiguous: return "ambiguous";
   }
   return "unknown";
 }
 
 /// Number of distinct Status values (for per-status counters).
-inline constexpr std::uint8_t kStatusCount = static_cast<std::uint8_t>(Status::kTableFull) + 1;
+inline constexpr std::uint8_t kStatusCount = static_cast<std::uint8_t>(Status::kAmbiguous) + 1;
 
 /// A status plus a value that is meaningful only when the status is kOk.
 /// T must be default-constructible; no exceptions, no heap.
