@@ -104,6 +104,16 @@ Status encode(const Frame& frame, std::span<std::uint8_t> out, std::size_t& writ
   const std::size_t rec_size = record_size(frame.kind);
   if (rec_size == 0) return Status::kUnknownKind;
   if (frame.count > capacity_of(frame.kind)) return Status::kTooManyCandidates;
+  // Refuse what decode would refuse, so a sender never emits a frame the
+  // receiver drops (has_range_rate must be 0/1, path a ToaPath value).
+  for (std::size_t i = 0; i < capacity_of(frame.kind); ++i) {
+    if (i >= frame.count) break;
+    if (frame.kind == FrameKind::kRadar && frame.radar[i].has_range_rate > 1) return Status::kMalformedFrame;
+    if (frame.kind == FrameKind::kSonar && frame.sonar[i].path != ToaPath::kDirect &&
+        frame.sonar[i].path != ToaPath::kReflected) {
+      return Status::kMalformedFrame;
+    }
+  }
   const std::size_t total = frame_size(frame.kind, frame.count);
   if (out.size() < total) return Status::kBufferTooSmall;
 

@@ -508,3 +508,31 @@ SCENARIO("encode and decode do not allocate", "[hal][codec][alloc]") {
     }
   }
 }
+
+SCENARIO("encode refuses field values that decode would refuse", "[hal][codec]") {
+  std::array<std::uint8_t, wire::kMaxFrameBytes> buf{};
+  std::size_t written = 5;
+  GIVEN("a radar plot with has_range_rate = 2") {
+    Frame f{};
+    f.kind = FrameKind::kRadar;
+    f.count = 1;
+    f.radar[0].has_range_rate = 2;
+    THEN("encode returns kMalformedFrame and writes nothing") {
+      REQUIRE(encode(f, buf, written) == Status::kMalformedFrame);
+      REQUIRE(written == 0);
+      f.radar[0].has_range_rate = 1;
+      REQUIRE(encode(f, buf, written) == Status::kOk);
+    }
+  }
+  GIVEN("a TOA arrival with path 7") {
+    Frame f{};
+    f.kind = FrameKind::kSonar;
+    f.count = 2;
+    f.sonar[0].path = kestrel::hal::ToaPath::kReflected;
+    f.sonar[1].path = static_cast<kestrel::hal::ToaPath>(7);
+    THEN("encode returns kMalformedFrame") {
+      REQUIRE(encode(f, buf, written) == Status::kMalformedFrame);
+      REQUIRE(written == 0);
+    }
+  }
+}

@@ -10,9 +10,10 @@
 
 namespace kestrel::hal {
 
-/// poll(frame) -> kOk (frame filled), kNoData (nothing yet, frame untouched),
-/// or a decode status (kBadCrc, kTruncated, ...) for a frame that was read
-/// and dropped; the feed has then already skipped past it.
+/// poll(frame) -> kOk (frame filled); kTooManyCandidates (frame filled with
+/// its first capacity items: usable, the excess dropped); kNoData (nothing
+/// yet, frame untouched); or a decode status (kBadCrc, kBadMagic, ...) for
+/// bytes that were read and dropped: the feed has already skipped past them.
 template <class F>
 concept MeasurementFeed = requires(F& feed, Frame& frame) {
   { feed.poll(frame) } -> std::same_as<Status>;

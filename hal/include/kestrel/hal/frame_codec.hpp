@@ -16,13 +16,16 @@ namespace kestrel::hal {
 /// Encode `frame` into `out`.
 /// @param written bytes written on kOk, 0 otherwise.
 /// @return kOk; kUnknownKind; kTooManyCandidates (count over the kind's
-///         capacity); kBufferTooSmall.
+///         capacity); kMalformedFrame (a field decode would refuse:
+///         has_range_rate not 0/1, path not a ToaPath); kBufferTooSmall.
 [[nodiscard]] Status encode(const Frame& frame, std::span<std::uint8_t> out, std::size_t& written);
 
 /// Decode one frame from the start of `in`.
 /// @param consumed bytes the caller should drop from its input: the whole
 ///        frame when its header was readable (even if it then failed CRC or
-///        content checks), 1 for kBadMagic (resynchronise byte by byte), 0 for
+///        content checks), 1 for kBadMagic and for a header whose payload_len
+///        exceeds wire::kMaxPayloadBytes (kMalformedFrame: the length cannot
+///        be real, so resynchronise byte by byte rather than skip it), 0 for
 ///        kTruncated (wait for more bytes).
 /// @return kOk; kTruncated; kBadMagic; kUnsupportedVersion; kUnknownKind;
 ///         kMalformedFrame (length inconsistent with count, bad enum value,
