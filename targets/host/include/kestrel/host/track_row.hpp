@@ -21,6 +21,7 @@ struct TrackRow {
   std::uint16_t hits = 0;       ///< Measurements associated in total.
   std::uint16_t misses = 0;     ///< Consecutive misses.
   bool associated = false;      ///< Updated by a measurement in this frame.
+  std::int16_t measurement_index = -1;  ///< Index of that measurement in the frame, -1 if none.
   double nis = 0.0;             ///< NIS of this frame's association (NaN if not associated).
   double x_m = 0.0;             ///< Position east of the sensor, m.
   double y_m = 0.0;             ///< Position north of the sensor, m.
@@ -48,6 +49,7 @@ TrackRow to_track_row(const TrackReport<Filter>& r) {
   row.hits = r.hits;
   row.misses = r.misses;
   row.associated = r.associated;
+  row.measurement_index = r.measurement_index;
   row.nis = r.associated ? T::to_double(r.nis) : kNaN;
   row.x_m = T::to_double(r.x(L::kX));
   row.y_m = T::to_double(r.x(L::kY));

@@ -1,0 +1,74 @@
+// The kestrel-sim subcommands. main.cpp parses the command line (CLI11)
+// into these option structs and calls the matching function; each returns
+// the process exit status. Errors in input files throw (std::runtime_error,
+// CsvError with its line number): main prints them and exits with 1.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kestrel::sim::cli {
+
+/// Options every command that runs a filter shares.
+struct FilterChoice {
+  std::string filter = "ekf-ca";
+  std::optional<double> qj;        ///< Overrides the filter's qj (CA models).
+  double budget_us = 1000.0;       ///< Step overrun threshold, us.
+};
+
+int cmd_list();
+
+struct GenerateOptions {
+  std::string scenario;
+  std::uint64_t seed = 0;
+  std::string out;  ///< Stream file; FILE.truth.csv and FILE.plots.csv beside it.
+};
+int cmd_generate(const GenerateOptions& o);
+
+struct RunOptions {
+  std::string scenario;
+  FilterChoice filter;
+  std::size_t runs = 20;
+  std::uint64_t seed = 0;   ///< Seed of run 0; run i uses seed + i.
+  unsigned jobs = 1;
+  std::string out;          ///< Default results/<scenario>.
+  bool plots = true;
+};
+int cmd_run(const RunOptions& o);
+
+struct SuiteOptions {
+  std::vector<std::string> scenarios{"s1", "s2"};
+  std::vector<std::string> filters{"ekf-ca"};
+  std::optional<double> qj;
+  double budget_us = 1000.0;
+  std::size_t runs = 20;
+  std::uint64_t seed = 0;
+  unsigned jobs = 1;
+  std::string out = "results";
+  bool plots = true;
+};
+int cmd_suite(const SuiteOptions& o);
+
+struct ReplayOptions {
+  std::string stream;       ///< Wire stream file, or
+  std::string csv;          ///< radar plot CSV.
+  std::string truth;        ///< Optional truth CSV: enables scoring.
+  FilterChoice filter;
+  double loss_threshold_m = 300.0;
+  std::size_t first_scored_step = 2;
+  std::string out = "results/replay";
+  bool plots = true;
+};
+int cmd_replay(const ReplayOptions& o);
+
+struct TimingOptions {
+  std::string scenario;
+  FilterChoice filter;
+  std::size_t runs = 20;
+  std::uint64_t seed = 0;
+};
+int cmd_timing(const TimingOptions& o);
+
+}  // namespace kestrel::sim::cli

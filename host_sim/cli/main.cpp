@@ -1,0 +1,95 @@
+// kestrel-sim: scenario generation, Monte Carlo runs, replay of recorded
+// data and timing of the real-time loop, all through the HAL exactly as a
+// board runs the tracker (docs/host_sim.md). This file only parses the
+// command line; each subcommand lives in its own cmd_*.cpp.
+#include <cstdio>
+#include <exception>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/commands.hpp"
+
+namespace {
+
+using namespace kestrel::sim::cli;  // NOLINT(google-build-using-namespace): this file wires them up
+
+void add_filter_options(CLI::App* cmd, FilterChoice& f) {
+  cmd->add_option("--filter,-f", f.filter, "Filter (see `list`)")->capture_default_str();
+  cmd->add_option("--qj", f.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
+  cmd->add_option("--budget-us", f.budget_us, "Step budget for overrun counting, us")->capture_default_str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"kestrel-sim: drive the Kestrel tracker through the HAL with simulated or recorded data"};
+  app.require_subcommand(1);
+
+  app.add_subcommand("list", "List scenarios and filters");
+
+  GenerateOptions gen;
+  CLI::App* generate = app.add_subcommand("generate", "Write one seeded run as a stream file plus truth and plot CSVs");
+  generate->add_option("--scenario,-s", gen.scenario, "Scenario (see `list`)")->required();
+  generate->add_option("--seed", gen.seed, "Noise seed")->capture_default_str();
+  generate->add_option("--out,-o", gen.out, "Stream file; FILE.truth.csv and FILE.plots.csv are written beside it")
+      ->required();
+
+  RunOptions run;
+  CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo runs of one scenario with one filter");
+  run_cmd->add_option("--scenario,-s", run.scenario, "Scenario (see `list`)")->required();
+  add_filter_options(run_cmd, run.filter);
+  run_cmd->add_option("--runs,-n", run.runs, "Monte Carlo runs")->capture_default_str();
+  run_cmd->add_option("--seed", run.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
+  run_cmd->add_option("--jobs,-j", run.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
+  run_cmd->add_option("--out,-o", run.out, "Output directory (default results/<scenario>)");
+  run_cmd->add_flag("!--no-plots", run.plots, "Do not run the plot script");
+
+  SuiteOptions suite;
+  CLI::App* suite_cmd = app.add_subcommand("suite", "The default suite: S1 and S2 with EKF-CA; combined summary");
+  suite_cmd->add_option("--scenarios", suite.scenarios, "Scenarios")->capture_default_str();
+  suite_cmd->add_option("--filters", suite.filters, "Filters")->capture_default_str();
+  suite_cmd->add_option("--qj", suite.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
+  suite_cmd->add_option("--budget-us", suite.budget_us, "Step budget, us")->capture_default_str();
+  suite_cmd->add_option("--runs,-n", suite.runs, "Monte Carlo runs per scenario and filter")->capture_default_str();
+  suite_cmd->add_option("--seed", suite.seed, "Seed of run 0")->capture_default_str();
+  suite_cmd->add_option("--jobs,-j", suite.jobs, "Worker threads")->capture_default_str();
+  suite_cmd->add_option("--out,-o", suite.out, "Output directory")->capture_default_str();
+  suite_cmd->add_flag("!--no-plots", suite.plots, "Do not run the plot script");
+
+  ReplayOptions replay;
+  CLI::App* replay_cmd = app.add_subcommand("replay", "Run a filter over a recorded stream file or plot CSV");
+  auto* stream_opt = replay_cmd->add_option("--stream", replay.stream, "Wire stream file");
+  auto* csv_opt = replay_cmd->add_option("--csv", replay.csv, "Radar plot CSV (time_s,range_m,bearing_rad,...)");
+  stream_opt->excludes(csv_opt);
+  csv_opt->excludes(stream_opt);
+  replay_cmd->add_option("--truth", replay.truth, "Truth CSV (time_s,x_m,y_m,...): score the run");
+  add_filter_options(replay_cmd, replay.filter);
+  replay_cmd->add_option("--loss-threshold-m", replay.loss_threshold_m, "L of the track-loss metric, m")
+      ->capture_default_str();
+  replay_cmd->add_option("--first-scored-step", replay.first_scored_step, "First frame index scored")
+      ->capture_default_str();
+  replay_cmd->add_option("--out,-o", replay.out, "Output directory")->capture_default_str();
+  replay_cmd->add_flag("!--no-plots", replay.plots, "Do not run the plot script");
+
+  TimingOptions timing;
+  CLI::App* timing_cmd = app.add_subcommand("timing", "Per-step latency of the real-time loop");
+  timing_cmd->add_option("--scenario,-s", timing.scenario, "Scenario (see `list`)")->required();
+  add_filter_options(timing_cmd, timing.filter);
+  timing_cmd->add_option("--runs,-n", timing.runs, "Runs")->capture_default_str();
+  timing_cmd->add_option("--seed", timing.seed, "Seed of run 0")->capture_default_str();
+
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (app.got_subcommand("list")) return cmd_list();
+    if (app.got_subcommand(generate)) return cmd_generate(gen);
+    if (app.got_subcommand(run_cmd)) return cmd_run(run);
+    if (app.got_subcommand(suite_cmd)) return cmd_suite(suite);
+    if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
+    if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());
+    return 1;
+  }
+  return 2;
+}

@@ -1,0 +1,34 @@
+#include "filters/filter_registry.hpp"
+
+#include <cctype>
+#include <stdexcept>
+
+#include "filters/ekf_ca.hpp"
+
+namespace kestrel::sim {
+
+namespace {
+// One line per filter.
+const FilterEntry kFilters[] = {
+    {"ekf-ca", "EKF, CA-2D white jerk, polar radar; double (paper 000 baseline, qj 1.6)",
+     hal::FrameKind::kRadar, &ekf_ca_setup, &run_ekf_ca},
+    {"ekf-ca-f32", "the same EKF-CA in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar,
+     &ekf_ca_f32_setup, &run_ekf_ca_f32},
+};
+}  // namespace
+
+std::span<const FilterEntry> filter_registry() { return kFilters; }
+
+const FilterEntry& find_filter(std::string_view name) {
+  std::string key(name);
+  for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string known;
+  for (const FilterEntry& e : kFilters) {
+    if (e.name == key) return e;
+    known += known.empty() ? "" : ", ";
+    known += e.name;
+  }
+  throw std::invalid_argument("unknown filter '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace kestrel::sim

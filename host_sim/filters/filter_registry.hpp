@@ -1,0 +1,51 @@
+// The filter registry: every tracker configuration kestrel-sim can run, by
+// name. Each entry builds its tracker (a concrete core Tracker type on the
+// host board) and runs it over a stream with pipeline/stream_run.hpp; the
+// type is erased only at this per-run boundary, never inside a step. A new
+// filter (R2-AEKF, UKF, ...) adds one file with its run function and one
+// line to the table in filter_registry.cpp.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "kestrel/hal/frame.hpp"
+#include "pipeline/stream_run_result.hpp"
+
+namespace kestrel::sim {
+
+/// Command-line overrides of a filter's defaults (unset = the filter's default).
+struct FilterOptions {
+  std::optional<double> qj;  ///< White-jerk PSD of CA models, m^2/s^5.
+};
+
+/// The parameters a run actually used, for summary.json and the table.
+struct FilterSetup {
+  std::string label;                         ///< e.g. "EKF-CA (double), qj 1.6".
+  std::map<std::string, double> parameters;  ///< Numeric parameters by name.
+};
+
+struct FilterEntry {
+  std::string_view name;         ///< Registry key ("ekf-ca").
+  std::string_view description;  ///< One line for `kestrel-sim list`.
+  hal::FrameKind kind;           ///< Frames it consumes.
+  /// Parameters the options resolve to.
+  FilterSetup (*setup)(const FilterOptions& options);
+  /// Build a fresh tracker and run it over `stream`.
+  StreamRunResult (*run)(std::vector<std::uint8_t> stream, const FilterOptions& options,
+                         std::uint64_t budget_ns);
+};
+
+/// Every registered filter, in listing order.
+std::span<const FilterEntry> filter_registry();
+
+/// The filter called `name` (case-insensitive). Throws std::invalid_argument
+/// listing the known names when there is none.
+const FilterEntry& find_filter(std::string_view name);
+
+}  // namespace kestrel::sim

@@ -1,0 +1,22 @@
+// Monte Carlo figures (SPEC section 10): the mean over runs of a per-run
+// figure with the 95 % confidence interval of that mean,
+// mean +- 1.96 sd / sqrt(n), sd the sample standard deviation (n - 1).
+// One run gives a zero-width interval (there is no spread to estimate).
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+namespace kestrel::sim {
+
+struct MeanCi {
+  double mean = 0.0;
+  double ci95_low = 0.0;
+  double ci95_high = 0.0;
+  std::size_t n = 0;  ///< Values that entered (NaN values are skipped).
+};
+
+/// Mean and 95 % interval of the finite values; all NaN if there are none.
+MeanCi mean_ci95(std::span<const double> values);
+
+}  // namespace kestrel::sim

@@ -1,0 +1,41 @@
+// One evaluated run: a stream through a registered filter, scored against
+// truth. Shared by `run` (one per seed), `replay` (one recorded stream)
+// and `timing`.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "filters/filter_registry.hpp"
+#include "metrics/run_metrics.hpp"
+#include "metrics/scoring.hpp"
+#include "pipeline/stream_run_result.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace kestrel::sim {
+
+struct RunDetail {
+  std::uint64_t seed = 0;
+  std::vector<MeasurementFrame> frames;  ///< What the stream carries (SI, as quantised).
+  std::vector<TruthSample> truth;
+  StreamRunResult stream;                ///< Per-frame tracker output.
+  std::vector<ScoredStep> steps;         ///< Scored frames.
+  RunMetrics metrics;
+};
+
+/// Run `filter` over `stream` and score it.
+/// @param frames the SI view of the stream (for the per-step CSV).
+/// @param period_s T for the loss time; @param loss_threshold_m L.
+RunDetail evaluate_stream(std::vector<std::uint8_t> stream, std::vector<MeasurementFrame> frames,
+                          std::vector<TruthSample> truth, const FilterEntry& filter, const FilterOptions& options,
+                          std::uint64_t budget_ns, const ScoringConfig& scoring, double period_s,
+                          double loss_threshold_m);
+
+/// Generate the scenario with `seed`, encode it, run and score it.
+RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const FilterEntry& filter,
+                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring);
+
+/// Run metrics of scored steps.
+RunMetrics metrics_of(const std::vector<ScoredStep>& steps, double period_s, double loss_threshold_m);
+
+}  // namespace kestrel::sim

@@ -1,0 +1,25 @@
+// Runs the plot script (plots/plot_results.py) with /usr/bin/python3, the
+// interpreter that has matplotlib on this project's hosts; KESTREL_PYTHON
+// and KESTREL_PLOT_SCRIPT override the interpreter and the script. Plotting
+// is best effort: a failure prints a warning and never fails the command.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace kestrel::sim {
+
+/// Run the script with `args`. @return true if it exited with status 0;
+/// otherwise a warning has been printed to stderr.
+bool run_plot_script(const std::vector<std::string>& args);
+
+/// Plots of one run: <prefix>_xy.png (truth, plots, track) and
+/// <prefix>_error.png (position error over time).
+bool plot_run(const std::filesystem::path& steps_csv, const std::filesystem::path& tracks_csv,
+              const std::filesystem::path& prefix, const std::string& title, double loss_threshold_m);
+
+/// Bar chart of the figures in a summary.json, per scenario and filter.
+bool plot_summary(const std::filesystem::path& summary_json, const std::filesystem::path& png);
+
+}  // namespace kestrel::sim

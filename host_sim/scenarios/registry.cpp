@@ -1,0 +1,36 @@
+#include "scenarios/registry.hpp"
+
+#include <cctype>
+#include <stdexcept>
+#include <string>
+
+#include "scenarios/s1_zigzag.hpp"
+#include "scenarios/s2_scurve.hpp"
+
+namespace kestrel::sim {
+
+namespace {
+// One line per scenario.
+const ScenarioEntry kScenarios[] = {
+    {"s1", &make_s1},
+    {"s2", &make_s2},
+    {"s1n", &make_s1n},
+    {"s2n", &make_s2n},
+};
+}  // namespace
+
+std::span<const ScenarioEntry> scenario_registry() { return kScenarios; }
+
+std::unique_ptr<Scenario> make_scenario(std::string_view name) {
+  std::string key(name);
+  for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  std::string known;
+  for (const ScenarioEntry& e : kScenarios) {
+    if (e.name == key) return e.make();
+    known += known.empty() ? "" : ", ";
+    known += e.name;
+  }
+  throw std::invalid_argument("unknown scenario '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace kestrel::sim

@@ -1,0 +1,20 @@
+// S1, zig-zag with an axial burst (SPEC section 9, paper 000), and S1n, the
+// same with time-varying noise. Truth is analytic:
+//   x(t) = -15000 + s(t),  y(t) = 8000 + 300 sin(2 pi t / 15)  [m]
+// with s(t) the along-track distance at 200 m/s plus +5 m/s^2 for
+// 80 <= t < 85 s (200 -> 225 m/s).
+#pragma once
+
+#include <memory>
+
+#include "scenarios/scenario.hpp"
+
+namespace kestrel::sim {
+
+/// S1 truth at time t (position and velocity, exact).
+TruthSample s1_truth(double t_s);
+
+std::unique_ptr<Scenario> make_s1();
+std::unique_ptr<Scenario> make_s1n();
+
+}  // namespace kestrel::sim
