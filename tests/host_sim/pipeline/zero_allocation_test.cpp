@@ -1,0 +1,46 @@
+// The board loop must not allocate (SPEC section 1, STYLE "Allocation
+// guard"): a whole S1 run through hal::Runner - feed decode, adapter,
+// Tracker::step, sink publish - inside an AllocationGuard. The stream is
+// built and the sink sized before the guard, as a board sizes its buffers
+// at start-up.
+#include <catch2/catch.hpp>
+#include <memory>
+
+#include "filters/ekf_ca.hpp"
+#include "kestrel/host/board.hpp"
+#include "pipeline/stream_run.hpp"
+#include "scenarios/registry.hpp"
+#include "stream/stream_writer.hpp"
+#include "support/alloc_guard.hpp"
+
+namespace {
+template <class Scalar>
+void check_run_allocates_nothing() {
+  using Tracker = kestrel::host::BoardRadarTracker<kestrel::EkfCa<Scalar>>;
+  auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("s1")->generate(0).frames);
+  auto tracker = std::make_unique<Tracker>(
+      kestrel::make_radar_tracker<Scalar, kestrel::host::kMaxTracks, kestrel::host::kMaxPlots>(
+          kestrel::sim::ekf_ca_params({})));
+  kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);
+
+  std::size_t allocations = 0;
+  {
+    kestrel::test::AllocationGuard guard;
+    run.run_to_end();
+    allocations = guard.allocations();
+  }
+  REQUIRE(run.stats().frames == 300);
+  REQUIRE(run.stats().steps == 300);
+  CHECK(run.stats().by_status[static_cast<std::size_t>(kestrel::Status::kOk)] == 300);
+  CHECK(allocations == 0);
+}
+}  // namespace
+
+SCENARIO("A whole S1 run through the Runner allocates nothing", "[host_sim][alloc]") {
+  GIVEN("EKF-CA in double") {
+    THEN("300 frames, 300 steps, zero allocations") { check_run_allocates_nothing<double>(); }
+  }
+  GIVEN("EKF-CA in float") {
+    THEN("300 frames, 300 steps, zero allocations") { check_run_allocates_nothing<float>(); }
+  }
+}
