@@ -27,6 +27,9 @@ struct Track {
   bool associated = false;             ///< A measurement was used in the latest frame.
   std::int16_t measurement_index = -1; ///< Its index in the latest scan, -1 if none.
   Scalar nis{};                        ///< nu^T S^-1 nu of the latest association.
+  MeasVec innovation = MeasVec::Zero();  ///< nu of the latest association, measurement units.
+  MeasVec innovation_variance = MeasVec::Zero();  ///< diag(S) of the latest association, measurement units squared.
+  Scalar test_ratio{};                 ///< nis / gate threshold of the latest association (<= 1 inside).
 };
 
 /// What the tracker publishes per reported track and frame.
@@ -35,6 +38,7 @@ struct TrackReport {
   using Scalar = typename Filter::Scalar;
   using State = typename Filter::State;
   using Cov = typename Filter::Cov;
+  using MeasVec = typename Filter::MeasVec;
 
   std::int64_t t_us = 0;               ///< Frame time, microseconds.
   std::uint32_t track_id = 0;          ///< Stable track id.
@@ -45,6 +49,9 @@ struct TrackReport {
   bool associated = false;             ///< Updated in this frame.
   std::int16_t measurement_index = -1; ///< Scan entry used in this frame, -1 if none.
   Scalar nis{};                        ///< NIS of this frame's association (if associated).
+  MeasVec innovation = MeasVec::Zero();  ///< nu of the latest association (this frame's if associated).
+  MeasVec innovation_variance = MeasVec::Zero();  ///< diag(S) of the latest association.
+  Scalar test_ratio{};                 ///< nis / gate threshold of the latest association.
   State x{};                           ///< State estimate, motion-model layout.
   Cov P{};                             ///< State covariance.
 };

@@ -63,6 +63,7 @@ struct StepStats {
   std::uint16_t confirmed = 0;     ///< Tracks confirmed in this frame.
   std::uint16_t deleted = 0;       ///< Tracks deleted in this frame.
   std::uint16_t dropped = 0;       ///< Unused measurements with no free slot to seed.
+  std::uint16_t refused = 0;       ///< Unused measurements the initiator refused to start from (kOutOfRange).
   std::uint16_t filter_failures = 0;  ///< Predict/update refused by a filter.
 };
 
@@ -177,6 +178,8 @@ class Tracker {
       if (tr.t_us != scan.t_us) continue;  // prediction failed this frame
       std::size_t best = kMaxMeasurements;
       Scalar best_d2{};
+      MeasVec best_nu = MeasVec::Zero();
+      MeasVec best_s = MeasVec::Zero();
       for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
         if (j >= scan.count) break;
         if (used[j]) continue;
@@ -185,6 +188,8 @@ class Tracker {
         if (best == kMaxMeasurements || in.d2 < best_d2) {
           best = j;
           best_d2 = in.d2;
+          best_nu = in.nu;
+          best_s = in.S.diagonal();
         }
       }
       if (best == kMaxMeasurements) continue;
@@ -197,6 +202,9 @@ class Tracker {
       tr.associated = true;
       tr.measurement_index = static_cast<std::int16_t>(best);
       tr.nis = best_d2;
+      tr.innovation = best_nu;
+      tr.innovation_variance = best_s;
+      tr.test_ratio = best_d2 / gate.threshold;
       ++stats_.associated;
     }
   }
@@ -240,11 +248,26 @@ class Tracker {
   }
 
   /// Every measurement still unused starts a seed (or, for a single-point
-  /// initiator, an initialised tentative track).
+  /// initiator, an initialised tentative track). A single-point initiator
+  /// runs before a slot is taken, so a measurement it refuses (kOutOfRange,
+  /// e.g. the PCL zero-Doppler veto) costs no slot and no track id.
   void seed_new(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
     for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
       if (j >= scan.count) break;
       if (used[j]) continue;
+      typename Filter::State x;
+      typename Filter::Cov P;
+      if constexpr (Initiator::kSinglePoint) {
+        const Status started = initiator_.initiate(scan.z[j], x, P);
+        if (started == Status::kOutOfRange) {
+          ++stats_.refused;
+          continue;
+        }
+        if (started != Status::kOk) {
+          ++stats_.filter_failures;
+          continue;
+        }
+      }
       const std::size_t slot = table_.allocate(prototype_);
       if (slot == kMaxTracks) {
         ++stats_.dropped;
@@ -255,9 +278,7 @@ class Tracker {
       tr.associated = true;
       tr.measurement_index = static_cast<std::int16_t>(j);
       if constexpr (Initiator::kSinglePoint) {
-        typename Filter::State x;
-        typename Filter::Cov P;
-        if (initiator_.initiate(scan.z[j], x, P) != Status::kOk || tr.filter.reset(x, P) != Status::kOk) {
+        if (tr.filter.reset(x, P) != Status::kOk) {
           table_.release(slot);
           ++stats_.filter_failures;
           continue;
@@ -312,13 +333,16 @@ class Tracker {
         remove = existed[i] && !hit[i];  // a seed lives one frame
       } else if (tr.status == TrackStatus::kTentative) {
         // The window is anchored at the track's start: confirm once M of its
-        // frames so far are hits; give up when N frames passed without that,
-        // or after more than N - M misses in a row (M can no longer be met).
+        // frames so far are hits; give up as soon as M can no longer be met
+        // within the first N frames (hits so far + frames left < M), which
+        // includes N frames passing without confirmation.
         const int recent = std::popcount(static_cast<unsigned>(tr.history & window));
+        const int frames_so_far = tr.age + 1;
+        const int frames_left = frames_so_far >= config_.confirm_n ? 0 : config_.confirm_n - frames_so_far;
         if (recent >= config_.confirm_m) {
           tr.status = TrackStatus::kConfirmed;
           ++stats_.confirmed;
-        } else if (tr.age + 1 >= config_.confirm_n || tr.misses > config_.confirm_n - config_.confirm_m) {
+        } else if (recent + frames_left < config_.confirm_m) {
           remove = true;
         }
       } else if (tr.misses > config_.max_coast_misses) {
@@ -349,6 +373,9 @@ class Tracker {
       r.associated = tr.associated;
       r.measurement_index = tr.measurement_index;
       r.nis = tr.nis;
+      r.innovation = tr.innovation;
+      r.innovation_variance = tr.innovation_variance;
+      r.test_ratio = tr.test_ratio;
       r.x = tr.filter.x();
       r.P = tr.filter.P();
     }
