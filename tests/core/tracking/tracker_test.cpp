@@ -261,3 +261,35 @@ SCENARIO("two separated targets get two tracks", "[tracker]") {
   CHECK(tracker.reports()[0].associated);
   CHECK(tracker.reports()[1].associated);
 }
+
+SCENARIO("an explicit confirmed-gate threshold replaces the chi-square quantile", "[tracker][gate]") {
+  kestrel::RadarTrackerParams p;
+  p.qj = 16.0;
+  auto config = kestrel::radar_tracker_config<double>(p);
+  config.gate_confirmed_threshold = 1e12;  // effectively ungated
+  kestrel::CaMotion<double> motion;
+  motion.qj = p.qj;
+  kestrel::CaPolarRadar<double> radar;
+  radar.sigma_range_m = p.sigma_range_m;
+  radar.sigma_bearing_rad = p.sigma_bearing_rad;
+  TestTracker<double> tracker(kestrel::EkfCa<double>(motion, radar),
+                              {radar, p.max_speed_mps, p.init_accel_sigma_mps2}, config);
+  using T = decltype(tracker);
+  for (int k = 0; k < 10; ++k) {
+    auto scan = scan_at<T>(k * 500000LL);
+    scan.z[0] = plot_at<double>(0.5 * k);
+    scan.count = 1;
+    REQUIRE(tracker.step(scan) == Status::kOk);
+  }
+  WHEN("a plot 2 km off the prediction arrives") {
+    auto scan = scan_at<T>(10 * 500000LL);
+    scan.z[0] = plot_at<double>(5.0, 2000, 0);
+    scan.count = 1;
+    REQUIRE(tracker.step(scan) == Status::kOk);
+    THEN("the confirmed track takes it (the default gate refuses it, see above)") {
+      REQUIRE(tracker.reports().size() == 1);
+      CHECK(tracker.reports()[0].associated);
+      CHECK(tracker.last_step().seeded == 0);
+    }
+  }
+}
