@@ -79,8 +79,7 @@ int cmd_replay(const ReplayOptions& o) {
   const std::vector<TruthSample> truth =
       o.truth.empty() ? std::vector<TruthSample>{} : read_truth_csv(std::filesystem::path(o.truth));
 
-  FilterOptions options;
-  options.qj = o.filter.qj;
+  const FilterOptions& options = o.filter.options;
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
   ScoringConfig scoring;
   scoring.first_scored_step = o.first_scored_step;

@@ -19,14 +19,16 @@ MonteCarloConfig config_from(const FilterChoice& f, std::size_t runs, std::uint6
   c.base_seed = seed;
   c.jobs = jobs;
   c.budget_ns = budget_ns_from_us(f.budget_us);
-  c.options.qj = f.qj;
+  c.options = f.options;
   return c;
 }
 
-void print_files(const std::filesystem::path& dir, const std::string& filter) {
+void print_files(const std::filesystem::path& dir, const std::string& filter, bool plots) {
   const RunFileNames n = run_file_names(dir, filter);
-  std::printf("wrote %s, %s, %s, %s and %s_{xy,error}.png\n", n.tracks_csv.c_str(), n.steps_csv.c_str(),
-              n.runs_csv.c_str(), (dir / "summary.json").c_str(), n.plot_prefix.c_str());
+  std::printf("wrote %s, %s, %s, %s", n.tracks_csv.c_str(), n.steps_csv.c_str(), n.runs_csv.c_str(),
+              (dir / "summary.json").c_str());
+  if (plots) std::printf(" and %s_{xy,error}.png", n.plot_prefix.c_str());
+  std::printf("\n");
 }
 }  // namespace
 
@@ -37,13 +39,13 @@ int cmd_run(const RunOptions& o) {
   const ScenarioReport report = run_scenario_report(scenario, o.filter.filter, config, dir, o.plots);
   print_table_header(stdout);
   print_table_row(stdout, report.row);
-  print_files(dir, report.row.filter);
+  print_files(dir, report.row.filter, o.plots);
   return 0;
 }
 
 int cmd_suite(const SuiteOptions& o) {
   FilterChoice f;
-  f.qj = o.qj;
+  f.options = o.options;
   f.budget_us = o.budget_us;
   const MonteCarloConfig config = config_from(f, o.runs, o.seed, o.jobs);
   const std::filesystem::path root(o.out);

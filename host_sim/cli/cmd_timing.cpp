@@ -20,7 +20,7 @@ int cmd_timing(const TimingOptions& o) {
   config.base_seed = o.seed;
   config.jobs = 1;
   config.budget_ns = budget_ns_from_us(o.filter.budget_us);
-  config.options.qj = o.filter.qj;
+  config.options = o.filter.options;
   if (config.runs == 0) throw std::invalid_argument("--runs must be at least 1");
 
   const MonteCarloResult mc = run_monte_carlo(*scenario, filter, config);

@@ -9,12 +9,14 @@
 #include <string>
 #include <vector>
 
+#include "filters/filter_registry.hpp"
+
 namespace kestrel::sim::cli {
 
 /// Options every command that runs a filter shares.
 struct FilterChoice {
   std::string filter = "ekf-ca";
-  std::optional<double> qj;        ///< Overrides the filter's qj (CA models).
+  FilterOptions options;           ///< --qj, --gate-d2 overrides.
   double budget_us = 1000.0;       ///< Step overrun threshold, us.
 };
 
@@ -41,7 +43,7 @@ int cmd_run(const RunOptions& o);
 struct SuiteOptions {
   std::vector<std::string> scenarios{"s1", "s2"};
   std::vector<std::string> filters{"ekf-ca"};
-  std::optional<double> qj;
+  FilterOptions options;
   double budget_us = 1000.0;
   std::size_t runs = 20;
   std::uint64_t seed = 0;

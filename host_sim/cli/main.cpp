@@ -13,9 +13,15 @@ namespace {
 
 using namespace kestrel::sim::cli;  // NOLINT(google-build-using-namespace): this file wires them up
 
+void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
+  cmd->add_option("--qj", o.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
+  cmd->add_option("--gate-d2", o.confirmed_gate_d2,
+                  "Gate of confirmed tracks, d2 units (e.g. 13.8 = 0.999 for 2 dof; default: ungated)");
+}
+
 void add_filter_options(CLI::App* cmd, FilterChoice& f) {
   cmd->add_option("--filter,-f", f.filter, "Filter (see `list`)")->capture_default_str();
-  cmd->add_option("--qj", f.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
+  add_model_options(cmd, f.options);
   cmd->add_option("--budget-us", f.budget_us, "Step budget for overrun counting, us")->capture_default_str();
 }
 
@@ -48,7 +54,7 @@ int main(int argc, char** argv) {
   CLI::App* suite_cmd = app.add_subcommand("suite", "The default suite: S1 and S2 with EKF-CA; combined summary");
   suite_cmd->add_option("--scenarios", suite.scenarios, "Scenarios")->capture_default_str();
   suite_cmd->add_option("--filters", suite.filters, "Filters")->capture_default_str();
-  suite_cmd->add_option("--qj", suite.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
+  add_model_options(suite_cmd, suite.options);
   suite_cmd->add_option("--budget-us", suite.budget_us, "Step budget, us")->capture_default_str();
   suite_cmd->add_option("--runs,-n", suite.runs, "Monte Carlo runs per scenario and filter")->capture_default_str();
   suite_cmd->add_option("--seed", suite.seed, "Seed of run 0")->capture_default_str();

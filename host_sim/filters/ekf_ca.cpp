@@ -1,6 +1,7 @@
 #include "filters/ekf_ca.hpp"
 
 #include <cstdio>
+#include <limits>
 #include <memory>
 #include <utility>
 
@@ -15,17 +16,22 @@ template <class Scalar>
 StreamRunResult run_typed(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns) {
   using Tracker = host::BoardRadarTracker<EkfCa<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
-  auto tracker = std::make_unique<Tracker>(
-      make_radar_tracker<Scalar, host::kMaxTracks, host::kMaxPlots>(ekf_ca_params(options)));
+  auto tracker = std::make_unique<Tracker>(make_ekf_ca_tracker<Scalar>(options));
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 
 FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
   const RadarTrackerParams p = ekf_ca_params(options);
   char label[96];
-  std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g", scalar, p.qj);
+  if (options.confirmed_gate_d2.has_value()) {
+    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g, gate d2 %g", scalar, p.qj, *options.confirmed_gate_d2);
+  } else {
+    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g", scalar, p.qj);
+  }
+  // An ungated run has no threshold: JSON null.
   return FilterSetup{label,
                      {{"qj", p.qj},
+                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
                       {"sigma_range_m", p.sigma_range_m},
                       {"sigma_bearing_rad", p.sigma_bearing_rad},
                       {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
@@ -35,6 +41,28 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
 }
 
 }  // namespace
+
+template <class Scalar>
+host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options) {
+  using T = ScalarTraits<Scalar>;
+  const RadarTrackerParams p = ekf_ca_params(options);
+  // What make_radar_tracker() builds, plus the confirmed-track gate, which
+  // RadarTrackerParams does not carry.
+  CaMotion<Scalar> motion;
+  motion.qj = T::from_double(p.qj);
+  CaPolarRadar<Scalar> radar;
+  radar.sigma_range_m = T::from_double(p.sigma_range_m);
+  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
+  const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
+      radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
+  TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
+  config.gate_confirmed_threshold =
+      options.confirmed_gate_d2.has_value() ? T::from_double(*options.confirmed_gate_d2) : T::max_value();
+  return host::BoardRadarTracker<EkfCa<Scalar>>(EkfCa<Scalar>(motion, radar), init, config);
+}
+
+template host::BoardRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(const FilterOptions&);
+template host::BoardRadarTracker<EkfCa<float>> make_ekf_ca_tracker<float>(const FilterOptions&);
 
 RadarTrackerParams ekf_ca_params(const FilterOptions& options) {
   RadarTrackerParams p;  // SPEC section 9 sensor, paper 000's qj = 1.6

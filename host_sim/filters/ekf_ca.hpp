@@ -1,15 +1,23 @@
 // Paper 000's EKF-CA on the host board (kestrel/tracking/radar_tracker.hpp):
 // double ("ekf-ca") and float ("ekf-ca-f32", the Cortex-M4F build's scalar).
-// Defaults are SPEC section 9: sr 3 m, sb 0.30 deg, qj 1.6 m^2/s^5.
+// Defaults are SPEC section 9: sr 3 m, sb 0.30 deg, qj 1.6 m^2/s^5; confirmed
+// tracks ungated unless --gate-d2 is given (see FilterOptions).
 #pragma once
 
 #include "filters/filter_registry.hpp"
+#include "kestrel/host/board.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 
 namespace kestrel::sim {
 
 /// The core parameters the options resolve to.
 RadarTrackerParams ekf_ca_params(const FilterOptions& options);
+
+/// The host board's EKF-CA tracker for these options (double and float are
+/// instantiated). Unless options.confirmed_gate_d2 is set, confirmed tracks
+/// are ungated (FilterOptions).
+template <class Scalar>
+host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options);
 
 FilterSetup ekf_ca_setup(const FilterOptions& options);
 FilterSetup ekf_ca_f32_setup(const FilterOptions& options);

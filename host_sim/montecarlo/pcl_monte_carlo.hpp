@@ -1,0 +1,35 @@
+// Monte Carlo over seeds for the PCL scenarios (SPEC sections 9 and 10):
+// run i uses seed base_seed + i for both the drone's manoeuvre and the
+// frames. Runs are independent and each writes only its own slot, so the
+// figures do not depend on the number of worker threads (step times do).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "kestrel/tracking/pcl_tracker.hpp"
+#include "metrics/pcl_metrics.hpp"
+#include "montecarlo/pcl_run.hpp"
+#include "scenarios/pcl002.hpp"
+
+namespace kestrel::sim {
+
+struct PclMonteCarloConfig {
+  std::size_t runs = 200;
+  std::uint64_t base_seed = 0;
+  unsigned jobs = 1;
+  std::uint64_t budget_ns = 1'000'000;  ///< Step overrun threshold.
+  PclTolerance tolerance;
+};
+
+struct PclMonteCarloResult {
+  std::vector<PclRunMetrics> runs;  ///< In seed order.
+  PclScenarioRun first_run;         ///< Run 0's truth and frames (for the CSVs and the plot).
+  PclRunOutput first_output;        ///< Run 0's tracker output.
+};
+
+PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                                        const PclMonteCarloConfig& config);
+
+}  // namespace kestrel::sim

@@ -1,0 +1,67 @@
+// One PCL run through the board loop (SPEC section 8): the scenario's wire
+// frames are encoded into a byte stream and driven exactly as a board drives
+// them, host::StreamFileFeed -> hal::PclAdapter (Doppler to range rate, the
+// over-capacity rule) -> Tracker::step (the ready-made PCL tracker of
+// core/include/kestrel/tracking/pcl_tracker.hpp) -> host::MemorySink, inside
+// hal::Runner and timed by host::SteadyClock. Per frame it keeps the reports
+// with each chosen candidate mapped back to its index in the wire frame, so
+// the metrics can tell whether the target's own detection was used.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "kestrel/hal/runner.hpp"
+#include "kestrel/status.hpp"
+#include "kestrel/tracking/pcl_tracker.hpp"
+#include "scenarios/pcl002.hpp"
+
+namespace kestrel::sim {
+
+/// One confirmed track's report in one frame, in SI units.
+struct PclTrackRow {
+  std::uint32_t id = 0;          ///< Stable track id.
+  bool associated = false;       ///< Updated by a candidate in this frame.
+  int frame_index = -1;          ///< That candidate's index in the wire frame, -1 if none.
+  double rb_m = 0.0;             ///< Estimated bistatic range, m.
+  double drb_mps = 0.0;          ///< Estimated range rate, m/s.
+  double p_rr = 0.0, p_rd = 0.0, p_dd = 0.0;  ///< Covariance (m^2, m^2/s, m^2/s^2).
+  double nis = 0.0;              ///< NIS of this frame's association (NaN if none).
+  double test_ratio = 0.0;       ///< nis / gate threshold of the latest association.
+  std::uint16_t age = 0, hits = 0, misses = 0;
+  bool has_prediction = false;   ///< It was reported in the previous frame too.
+  double pred_rb_m = 0.0;        ///< F(dt) x of its previous report: the predicted Rb, m.
+  double pred_drb_mps = 0.0;     ///< ... and range rate, m/s.
+};
+
+struct PclFrameOutcome {
+  Status status = Status::kOk;   ///< Runner::poll_once() result.
+  bool stepped = false;          ///< Reached Tracker::step.
+  std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
+  std::size_t scan_count = 0;    ///< Candidates the tracker saw.
+  bool target_in_scan = false;   ///< The target's detection survived the adapter's cut.
+  std::uint16_t refused_starts = 0;  ///< Candidates the initiator refused (zero-Doppler veto).
+  std::uint16_t dropped_starts = 0;  ///< Candidates with no free table slot to start a track.
+  std::size_t tracks_in_table = 0;   ///< Tentative + confirmed tracks after the step.
+  std::vector<PclTrackRow> tracks;  ///< Confirmed tracks reported.
+};
+
+struct PclRunOutput {
+  std::vector<PclFrameOutcome> frames;  ///< One per wire frame, in order.
+  hal::RunnerStats stats;
+};
+
+/// The tracker parameters that match a scenario's sensor (carrier, sigma_Rb,
+/// sigma_fD); the track-management defaults are PclTrackerParams'.
+PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario);
+
+/// Run the PCL tracker with `params` over the run's frames. The scan
+/// capacity is the scenario's (32 or 64; others throw std::invalid_argument).
+PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                     std::uint64_t budget_ns);
+
+/// Track-table capacity used with each scan capacity.
+std::size_t pcl_track_capacity(std::size_t scan_capacity);
+
+}  // namespace kestrel::sim

@@ -1,0 +1,213 @@
+#include "report/pcl_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <stdexcept>
+
+#include "kestrel/models/measurement/bistatic_range_rate.hpp"
+
+#ifndef KESTREL_SIM_PLOT_SCRIPT
+#error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
+#endif
+
+namespace kestrel::sim {
+
+namespace {
+
+std::ofstream open_out(const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot create '" + path.string() + "'");
+  out.precision(10);
+  return out;
+}
+
+/// A number, or an empty cell for NaN.
+std::string cell(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json interval(const MeanCi& m) {
+  return {{"mean", number_or_null(m.mean)},
+          {"ci95_low", number_or_null(m.ci95_low)},
+          {"ci95_high", number_or_null(m.ci95_high)},
+          {"n", m.n}};
+}
+
+const char* gate_name(GateProbability g) {
+  switch (g) {
+    case GateProbability::k90: return "0.90";
+    case GateProbability::k95: return "0.95";
+    case GateProbability::k99: return "0.99";
+    case GateProbability::k995: return "0.995";
+    case GateProbability::k999: return "0.999";
+  }
+  return "?";
+}
+
+}  // namespace
+
+void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<PclRunMetrics>& runs) {
+  std::ofstream out = open_out(path);
+  out << "seed,association_accuracy,assoc_correct,assoc_frames,coverage,covered_frames,coverage_frames,"
+         "confirmed_tracks,target_tracks,false_tracks,rb_rmse_m,drb_rmse_mps,rmse_frames,time_to_confirm_s,"
+         "detections,cut_by_adapter,cut_by_sensor,frames_over_capacity,frames_refused,vetoed_starts,"
+         "dropped_starts,max_tracks_in_table\n";
+  for (const PclRunMetrics& r : runs) {
+    out << r.seed << ',' << cell(r.association_accuracy) << ',' << r.assoc_correct << ',' << r.assoc_frames << ','
+        << cell(r.coverage) << ',' << r.covered_frames << ',' << r.coverage_frames << ',' << r.confirmed_tracks << ','
+        << r.target_tracks << ',' << r.false_tracks << ',' << cell(r.rb_rmse_m) << ',' << cell(r.drb_rmse_mps) << ','
+        << r.rmse_frames << ',' << cell(r.time_to_confirm_s) << ',' << r.detections << ',' << r.cut_by_adapter << ','
+        << r.cut_by_sensor << ',' << r.frames_over_capacity << ',' << r.frames_refused << ',' << r.refused_starts
+        << ',' << r.dropped_starts << ',' << r.max_tracks_in_table << '\n';
+  }
+}
+
+void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfig& scenario,
+                        const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tol) {
+  const double lambda = pcl_lambda_m(scenario);
+  const std::size_t n = std::min(run.frames.size(), out.frames.size());
+  {
+    std::ofstream f = open_out(dir / "pcl_truth.csv");
+    f << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,rb_m,drb_mps,fd_hz\n";
+    for (const PclTruth& t : run.truth) {
+      f << t.t_s << ',' << t.x_m << ',' << t.y_m << ',' << t.z_m << ',' << t.vx_mps << ',' << t.vy_mps << ','
+        << t.vz_mps << ',' << t.rb_m << ',' << t.drb_mps << ',' << t.fd_hz << '\n';
+    }
+  }
+  {
+    std::ofstream f = open_out(dir / "pcl_candidates.csv");
+    f << "time_s,index,rb_m,fd_hz,drb_mps,snr_db,is_target,chosen_by_track\n";
+    for (std::size_t k = 0; k < n; ++k) {
+      const hal::Frame& w = run.frames[k].wire;
+      std::map<int, std::uint32_t> chosen;
+      for (const PclTrackRow& r : out.frames[k].tracks) {
+        if (r.frame_index >= 0) chosen[r.frame_index] = r.id;
+      }
+      for (std::size_t i = 0; i < w.count; ++i) {
+        const double rb = static_cast<double>(w.pcl[i].bistatic_range_mm) * 1e-3;
+        const double fd = static_cast<double>(w.pcl[i].doppler_mhz) * 1e-3;
+        const auto it = chosen.find(static_cast<int>(i));
+        f << static_cast<double>(w.t_us) * 1e-6 << ',' << i << ',' << rb << ',' << fd << ','
+          << range_rate_from_doppler(fd, lambda) << ',' << static_cast<double>(w.pcl[i].snr_cdb) * 0.01 << ','
+          << (static_cast<int>(i) == run.frames[k].target_index ? 1 : 0) << ','
+          << (it == chosen.end() ? 0u : it->second) << '\n';
+      }
+    }
+  }
+  {
+    std::ofstream f = open_out(dir / "pcl_tracks.csv");
+    f << "time_s,track_id,associated,frame_index,rb_m,drb_mps,fd_hz,p_rr,p_rd,p_dd,nis,test_ratio,age,hits,misses,"
+         "pred_rb_m,pred_drb_mps,pred_fd_hz,on_target\n";
+    for (std::size_t k = 0; k < n; ++k) {
+      const PclTruth& t = run.truth[k];
+      for (const PclTrackRow& r : out.frames[k].tracks) {
+        const bool on = std::abs(r.rb_m - t.rb_m) <= tol.rb_m && std::abs(r.drb_mps - t.drb_mps) <= tol.drb_mps;
+        const double nan = std::nan("");
+        f << t.t_s << ',' << r.id << ',' << (r.associated ? 1 : 0) << ',' << r.frame_index << ',' << r.rb_m << ','
+          << r.drb_mps << ',' << doppler_from_range_rate(r.drb_mps, lambda) << ',' << r.p_rr << ',' << r.p_rd << ','
+          << r.p_dd << ',' << cell(r.nis) << ',' << r.test_ratio << ',' << r.age << ',' << r.hits << ',' << r.misses
+          << ',' << cell(r.has_prediction ? r.pred_rb_m : nan) << ','
+          << cell(r.has_prediction ? r.pred_drb_mps : nan) << ','
+          << cell(r.has_prediction ? doppler_from_range_rate(r.pred_drb_mps, lambda) : nan) << ',' << (on ? 1 : 0)
+          << '\n';
+      }
+    }
+  }
+}
+
+nlohmann::json pcl_summary_json(const PclScenarioConfig& sc, const PclTrackerParams& p, const PclMonteCarloConfig& c,
+                                const PclSummary& s) {
+  return {
+      {"schema", "kestrel-sim-pcl-summary/1"},
+      {"scenario",
+       {{"name", sc.name},
+        {"frames", sc.frames},
+        {"frame_period_s", sc.frame_period_s},
+        {"carrier_hz", sc.carrier_hz},
+        {"pd", sc.pd},
+        {"sigma_rb_m", sc.sigma_rb_m},
+        {"sigma_fd_hz", sc.sigma_fd_hz},
+        {"clutter_mean", sc.clutter_mean},
+        {"ridge_max", sc.ridge_max},
+        {"scan_capacity", sc.scan_capacity},
+        {"track_capacity", pcl_track_capacity(sc.scan_capacity)}}},
+      {"tracker",
+       {{"accel_sigma_mps2", p.accel_sigma_mps2},
+        {"gate_confirmed", gate_name(p.gate_confirmed)},
+        {"gate_tentative", gate_name(p.gate_tentative)},
+        {"confirm_m", p.confirm_m},
+        {"confirm_n", p.confirm_n},
+        {"min_start_doppler_hz", p.min_start_doppler_hz},
+        {"max_coast_misses", p.max_coast_misses},
+        {"max_rb_variance_m2", p.max_rb_variance_m2}}},
+      {"runs", s.runs},
+      {"base_seed", c.base_seed},
+      {"tolerance", {{"rb_m", c.tolerance.rb_m}, {"drb_mps", c.tolerance.drb_mps}}},
+      {"association_accuracy", interval(s.association_accuracy)},
+      {"association_accuracy_pooled", number_or_null(s.pooled_accuracy)},
+      {"coverage_after_confirmation", interval(s.coverage)},
+      {"coverage_pooled", number_or_null(s.pooled_coverage)},
+      {"false_confirmed_tracks_per_run", interval(s.false_tracks)},
+      {"runs_with_false_track", s.runs_with_false_track},
+      {"total_false_tracks", s.total_false_tracks},
+      {"runs_never_confirmed", s.runs_never_confirmed},
+      {"rb_rmse_m", interval(s.rb_rmse_m)},
+      {"drb_rmse_mps", interval(s.drb_rmse_mps)},
+      {"time_to_first_confirmation_s", interval(s.time_to_confirm_s)},
+      {"detections", s.detections},
+      {"detections_cut_by_adapter", s.cut_by_adapter},
+      {"detections_cut_by_sensor", s.cut_by_sensor},
+      {"frames_over_capacity", s.frames_over_capacity},
+      {"frames_refused", s.frames_refused},
+      {"vetoed_starts", s.refused_starts},
+      {"dropped_starts", s.dropped_starts},
+      {"max_tracks_in_table", s.max_tracks_in_table},
+      {"step_ns",
+       {{"min", s.timing.min_ns},
+        {"median", s.timing.median_ns},
+        {"p99", s.timing.p99_ns},
+        {"max", s.timing.max_ns},
+        {"mean", s.timing.mean_ns},
+        {"steps", s.timing.steps},
+        {"budget_ns", s.timing.budget_ns},
+        {"overruns", s.timing.overruns},
+        {"jobs", c.jobs}}},
+  };
+}
+
+void write_json_file(const std::filesystem::path& path, const nlohmann::json& j) {
+  std::ofstream out = open_out(path);
+  out << j.dump(2) << '\n';
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+bool plot_pcl(const std::filesystem::path& dir, const std::string& title) {
+  // plots/pcl_plots.py sits beside plot_results.py; the interpreter is the
+  // one plot_runner uses (KESTREL_PYTHON overrides it).
+  const auto quote = [](const std::string& v) {
+    std::string q = "'";
+    for (const char ch : v) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+  };
+  const char* py = std::getenv("KESTREL_PYTHON");
+  const std::string python = py != nullptr && *py != '\0' ? py : "/usr/bin/python3";
+  const std::filesystem::path script = std::filesystem::path(KESTREL_SIM_PLOT_SCRIPT).parent_path() / "pcl_plots.py";
+  const std::string cmd = quote(python) + " " + quote(script.string()) + " --dir " + quote(dir.string()) +
+                          " --title " + quote(title);
+  std::fflush(stdout);
+  const int rc = std::system(cmd.c_str());
+  if (rc == 0) return true;
+  std::fprintf(stderr, "warning: PCL plotting failed (status %d); results are unaffected. Command: %s\n", rc,
+               cmd.c_str());
+  return false;
+}
+
+}  // namespace kestrel::sim

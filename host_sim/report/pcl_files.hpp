@@ -1,0 +1,40 @@
+// The files `kestrel-sim pcl` writes into its output directory:
+//   pcl_runs.csv        one row per Monte Carlo run (the per-run figures);
+//   pcl_truth.csv       run 0: the drone (x, y, z, velocity) and its Rb, dRb, fD;
+//   pcl_candidates.csv  run 0: every candidate of every frame (Rb, fD, SNR),
+//                       whether it is the target's detection, whether the
+//                       adapter kept it, and the confirmed track that took it;
+//   pcl_tracks.csv      run 0: every confirmed track per frame: estimate,
+//                       covariance, prediction, NIS, test ratio, on-target;
+//   pcl_summary.json    the Monte Carlo figures with their 95 % intervals,
+//                       the scenario and tracker settings (schema
+//                       "kestrel-sim-pcl-summary/1"; NaN is written as null);
+//   pcl_range_doppler.png  run 0 as in paper 002's figure 2 (plots/pcl_plots.py).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "kestrel/tracking/pcl_tracker.hpp"
+#include "montecarlo/pcl_monte_carlo.hpp"
+
+namespace kestrel::sim {
+
+void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<PclRunMetrics>& runs);
+
+/// pcl_truth.csv, pcl_candidates.csv and pcl_tracks.csv of one run.
+void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfig& scenario,
+                        const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tolerance);
+
+nlohmann::json pcl_summary_json(const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                                const PclMonteCarloConfig& config, const PclSummary& summary);
+
+void write_json_file(const std::filesystem::path& path, const nlohmann::json& j);
+
+/// Run plots/pcl_plots.py over the run-0 CSVs of `dir` (best effort, like
+/// the other plots: a failure prints a warning). @return true on success.
+bool plot_pcl(const std::filesystem::path& dir, const std::string& title);
+
+}  // namespace kestrel::sim
