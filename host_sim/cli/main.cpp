@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/cmd_pcl.hpp"
 #include "cli/commands.hpp"
 
 namespace {
@@ -84,6 +85,9 @@ int main(int argc, char** argv) {
   timing_cmd->add_option("--runs,-n", timing.runs, "Runs")->capture_default_str();
   timing_cmd->add_option("--seed", timing.seed, "Seed of run 0")->capture_default_str();
 
+  PclOptions pcl;
+  CLI::App* pcl_cmd = add_pcl_command(app, pcl);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -93,6 +97,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(suite_cmd)) return cmd_suite(suite);
     if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
+    if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());
     return 1;

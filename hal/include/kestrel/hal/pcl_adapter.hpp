@@ -39,17 +39,18 @@ struct PclAdapterConfig {
   double carrier_hz = 701.0e6;  ///< Illuminator carrier frequency, Hz (lambda = c0 / f).
 };
 
-namespace detail {
-
-/// [Rb_m, dRb_mps] of one candidate.
+/// [Rb_m, dRb_mps] of one candidate: Rb = mm / 1000, dRb = -lambda * mHz / 1000.
+/// @param lambda_m carrier wavelength, m.
 template <class Scalar>
-Vec<Scalar, 2> pcl_measurement(const PclCandidate& c, Scalar lambda_m) {
+Vec<Scalar, 2> to_measurement(const PclCandidate& c, Scalar lambda_m) {
   using T = ScalarTraits<Scalar>;
   Vec<Scalar, 2> z;
   z(0) = T::from_ratio(static_cast<std::int64_t>(c.bistatic_range_mm), 1000);
   z(1) = range_rate_from_doppler(T::from_ratio(c.doppler_mhz, 1000), lambda_m);
   return z;
 }
+
+namespace detail {
 
 /// true if candidate a should be dropped before candidate b (rules 1-3).
 template <class Scalar>
@@ -109,7 +110,7 @@ template <class Scalar, std::size_t kCapacity>
   Scalar d2[kMaxPclCandidates];
   for (std::size_t j = 0; j < kMaxPclCandidates; ++j) {
     d2[j] = ScalarTraits<Scalar>::max_value();
-    if (j < frame.count) z[j] = detail::pcl_measurement(frame.pcl[j], lambda_m);
+    if (j < frame.count) z[j] = to_measurement(frame.pcl[j], lambda_m);
   }
   return detail::fill_scan(frame, z, d2, scan);
 }
@@ -125,7 +126,7 @@ template <class Scalar, std::size_t kCapacity, class TrackT, std::size_t kMaxTra
   Vec<Scalar, 2> z[kMaxPclCandidates];
   Scalar d2[kMaxPclCandidates];
   for (std::size_t j = 0; j < kMaxPclCandidates; ++j) {
-    if (j < frame.count) z[j] = detail::pcl_measurement(frame.pcl[j], lambda_m);
+    if (j < frame.count) z[j] = to_measurement(frame.pcl[j], lambda_m);
   }
   if (frame.count > kCapacity) {
     nearest_track_d2(table, frame.t_us, z, frame.count, d2);
