@@ -1,0 +1,342 @@
+// The underwater tracker of paper 003 (SPEC sections 3, 4, 6 and 9, UW-003):
+// one target, a few beacons, each frame a set of TOA arrivals labelled by
+// beacon and path (direct or seabed-reflected). The generic Tracker
+// (tracking/tracker.hpp) associates unlabelled plots to many tracks; here
+// the labels already say which channel each arrival is, so the front end is
+// a small single-target step(frame) in the same style:
+//
+//   step(scan): validate -> not yet initialised: robust multilateration of
+//   the frame (tracking/multilateration.hpp), then an EKF update with its
+//   inliers from a wide prior (which gives P its position / sound-speed
+//   correlation) -> initialised: predict to the frame time, per-channel gate
+//   k*sqrt(S_ii) (and the optional ellipsoidal gate), update with the
+//   channels that pass (predict-only when none does) -> report.
+//
+// State [x y z vx vy vz c] (models/motion/constant_velocity_3d_sound_speed.hpp),
+// measurement models/measurement/multipath_toa.hpp, filter
+// filters/channel_gated_ekf.hpp. Every non-kOk status leaves the tracker as
+// it was (the step works on a copy of the 7-state filter and commits at the
+// end); only the per-status counters move. No allocation, bounded loops.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "kestrel/filters/channel_gated_ekf.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/models/measurement/multipath_toa.hpp"
+#include "kestrel/models/motion/constant_velocity_3d_sound_speed.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
+#include "kestrel/tracking/multilateration.hpp"
+#include "kestrel/tracking/toa_scan.hpp"
+
+namespace kestrel {
+
+/// Configuration of an UnderwaterTracker, in its scalar.
+template <class Scalar, int kMaxBeacons>
+struct UnderwaterTrackerConfig {
+  ConstantVelocity3DSoundSpeed<Scalar> motion{};   ///< Process noise (accel sigma, c random walk).
+  MultipathToaConfig<Scalar, kMaxBeacons> toa{};   ///< Beacons, seabed depth D, TOA sigma.
+  ChannelGateConfig<Scalar> gate{};                ///< Per-channel k (default 2) and ellipsoidal option.
+  MultilaterationConfig<Scalar> init{};            ///< First fix; its sound speed is the initial c.
+  Scalar initial_position_sigma_m = lit<Scalar>(100.0);    ///< Prior sigma around the fix before its EKF update, m.
+  Scalar initial_velocity_sigma_mps = lit<Scalar>(2.0);    ///< Initial velocity sigma (velocity starts at 0), m/s.
+  Scalar initial_sound_speed_sigma_mps = lit<Scalar>(1.0); ///< Initial c sigma, m/s.
+  Scalar max_toa_s = lit<Scalar>(10.0);            ///< Arrival times outside (0, max_toa_s] are out of range, s.
+  /// Re-run the multilateration after this many frames in a row that carried
+  /// at least init.min_arrivals arrivals but fused none (0: never).
+  std::uint16_t reacquire_after_empty_frames = 3;
+};
+
+/// What one step did (readable after step()).
+struct UnderwaterStepStats {
+  Status status = Status::kOk;  ///< Return value of the step.
+  std::uint8_t arrivals = 0;    ///< Arrivals in the frame.
+  std::uint8_t fused = 0;       ///< Arrivals that went into the update.
+  std::uint8_t gated_out = 0;   ///< Dropped by a gate (or rejected by the multilateration on a fix).
+  ChannelMask present = 0;      ///< Channels the frame carried (channel = 2 beacon + path).
+  ChannelMask fused_mask = 0;   ///< Channels fused.
+  ChannelMask gated_mask = 0;   ///< Channels dropped by a gate or rejected by the fix.
+  bool initialised = false;     ///< This frame (re)started the track from a multilateration fix.
+  bool predict_only = false;    ///< Tracked frame with nothing fused.
+};
+
+/// Running totals since construction.
+struct UnderwaterCounters {
+  std::uint32_t frames_ok = 0;        ///< Steps that returned kOk.
+  std::uint32_t initialisations = 0;  ///< Fixes that (re)started the track (first one included).
+  std::uint32_t arrivals = 0;         ///< Arrivals in kOk frames.
+  std::uint32_t fused = 0;            ///< Arrivals fused.
+  std::uint32_t gated_out = 0;        ///< Arrivals gated out or rejected by a fix.
+  std::uint32_t predict_only = 0;     ///< Tracked frames with nothing fused.
+  std::uint32_t rejected[kStatusCount] = {};  ///< Steps refused, per status.
+};
+
+/// The tracker's output for one frame.
+template <class Scalar>
+struct UnderwaterReport {
+  using State = Vec<Scalar, 7>;
+  using Cov = Mat<Scalar, 7, 7>;
+  std::int64_t t_us = 0;      ///< Frame time, microseconds.
+  State x = State::Zero();    ///< [x y z vx vy vz c]: m, m, m (depth down), m/s x3, m/s.
+  Cov P = Cov::Zero();        ///< Covariance of x.
+  std::uint8_t fused = 0;     ///< Arrivals fused this frame.
+  std::uint8_t gated_out = 0; ///< Arrivals gated out this frame.
+  bool initialised = false;   ///< This frame was a (re)initialisation.
+  Scalar nis{};               ///< nu^T S^-1 nu over the fused channels.
+};
+
+template <class Scalar, int kMaxBeacons = 4, std::size_t kMaxArrivals = 2 * static_cast<std::size_t>(kMaxBeacons)>
+class UnderwaterTracker {
+ public:
+  using Motion = ConstantVelocity3DSoundSpeed<Scalar>;
+  using Toa = MultipathToa<Motion, kMaxBeacons>;
+  using Filter = ChannelGatedEkf<Motion, Toa>;
+  using Layout = typename Motion::Layout;
+  using State = typename Filter::State;
+  using Cov = typename Filter::Cov;
+  using MeasVec = typename Filter::MeasVec;
+  using Scan = ToaScan<Scalar, kMaxArrivals>;
+  using Report = UnderwaterReport<Scalar>;
+  using Config = UnderwaterTrackerConfig<Scalar, kMaxBeacons>;
+  static_assert(Motion::kStateDim == 7, "report layout");
+  static_assert(kMaxArrivals <= 255, "per-frame counts are uint8");
+
+  explicit UnderwaterTracker(const Config& config) : config_(config) {
+    Toa toa;
+    toa.config = config.toa;
+    filter_ = Filter(config.motion, toa);
+  }
+
+  /// Process one frame.
+  /// @return kOk (tracked, predict-only, or initialised: see last_step());
+  ///   frame checks, in this order: kMalformedFrame (count over capacity,
+  ///   unknown path, two arrivals on one channel), kTimeWentBackwards,
+  ///   kNonFinite (an arrival time), kOutOfRange (beacon not configured, time
+  ///   outside (0, max_toa_s]);
+  ///   before initialisation, the fix's status: kUnderdetermined,
+  ///   kNotPositiveDefinite, kNoConvergence, kAmbiguous;
+  ///   filter failures: kNonFinite, kNotPositiveDefinite.
+  ///   On any non-kOk status the tracker is unchanged and reports() is empty.
+  [[nodiscard]] Status step(const Scan& scan) {
+    stats_ = UnderwaterStepStats{};
+    report_count_ = 0;
+    MeasVec z = MeasVec::Zero();
+    ChannelMask present = 0;
+    const Status valid = validate(scan, z, present);
+    if (valid != Status::kOk) return refuse(valid);
+    stats_.arrivals = static_cast<std::uint8_t>(scan.count);
+    stats_.present = present;
+
+    Filter next = filter_;
+    std::uint16_t empty_frames = empty_frames_;
+    if (!initialised_) {
+      const Status s = initialise(next, z, present);
+      if (s != Status::kOk) return refuse(s);
+      empty_frames = 0;
+    } else {
+      const Scalar dt = ScalarTraits<Scalar>::from_ratio(scan.t_us - t_us_, 1000000);
+      Status s = next.predict(dt);
+      if (s == Status::kOk) s = next.update_gated(z, present, config_.gate);
+      if (s != Status::kOk) return refuse(s);
+      const auto& d = next.diagnostics();
+      stats_.fused_mask = d.fused;
+      stats_.gated_mask = d.gated_channel | d.gated_ellipsoid;
+      stats_.fused = static_cast<std::uint8_t>(channel_count(d.fused));
+      stats_.gated_out = static_cast<std::uint8_t>(channel_count(stats_.gated_mask));
+      stats_.predict_only = d.fused == 0;
+      empty_frames = 0;
+      if (stats_.predict_only && channel_count(present) >= static_cast<int>(config_.init.min_arrivals)) {
+        empty_frames = static_cast<std::uint16_t>(empty_frames_ + 1);
+        // Lost: everything a full frame said was outside the gate, several
+        // frames running. Start again from this frame if it gives a fix.
+        if (config_.reacquire_after_empty_frames > 0 && empty_frames >= config_.reacquire_after_empty_frames) {
+          Filter fresh = next;
+          if (initialise(fresh, z, present) == Status::kOk) {
+            next = fresh;
+            empty_frames = 0;
+          }
+        }
+      }
+    }
+
+    filter_ = next;
+    initialised_ = true;
+    empty_frames_ = empty_frames;
+    t_us_ = scan.t_us;
+    have_time_ = true;
+    stats_.status = Status::kOk;
+    ++counters_.frames_ok;
+    counters_.arrivals += stats_.arrivals;
+    counters_.fused += stats_.fused;
+    counters_.gated_out += stats_.gated_out;
+    if (stats_.predict_only) ++counters_.predict_only;
+    if (stats_.initialised) ++counters_.initialisations;
+
+    Report& r = reports_[0];
+    r.t_us = scan.t_us;
+    r.x = filter_.x();
+    r.P = filter_.P();
+    r.fused = stats_.fused;
+    r.gated_out = stats_.gated_out;
+    r.initialised = stats_.initialised;
+    r.nis = filter_.diagnostics().nis;
+    report_count_ = 1;
+    return Status::kOk;
+  }
+
+  /// The report of the last kOk step (one), or nothing.
+  std::span<const Report> reports() const { return {reports_, report_count_}; }
+  const UnderwaterStepStats& last_step() const { return stats_; }
+  const UnderwaterCounters& counters() const { return counters_; }
+  /// The filter (state, covariance, per-channel diagnostics of the last update).
+  const Filter& filter() const { return filter_; }
+  /// The multilateration result of the last fix attempt.
+  const MultilaterationResult<Scalar>& last_fix() const { return fix_; }
+  bool initialised() const { return initialised_; }
+  const Config& config() const { return config_; }
+
+ private:
+  Status refuse(Status s) {
+    stats_ = UnderwaterStepStats{};
+    stats_.status = s;
+    report_count_ = 0;
+    ++counters_.rejected[static_cast<std::size_t>(s)];
+    return s;
+  }
+
+  /// Frame checks; fills the channel vector and mask on success.
+  Status validate(const Scan& scan, MeasVec& z, ChannelMask& present) const {
+    using T = ScalarTraits<Scalar>;
+    if (scan.count > kMaxArrivals) return Status::kMalformedFrame;
+    for (std::size_t i = 0; i < kMaxArrivals; ++i) {
+      if (i >= scan.count) break;
+      const auto& a = scan.arrivals[i];
+      if (a.path != ArrivalPath::kDirect && a.path != ArrivalPath::kReflected) return Status::kMalformedFrame;
+      if (a.beacon >= kMaxBeacons) continue;  // out of range, reported below
+      const int ch = Toa::channel(a.beacon, a.path);
+      if (has_channel(present, ch)) return Status::kMalformedFrame;
+      present = with_channel(present, ch);
+    }
+    if (have_time_ && scan.t_us < t_us_) return Status::kTimeWentBackwards;
+    for (std::size_t i = 0; i < kMaxArrivals; ++i) {
+      if (i >= scan.count) break;
+      if (!T::is_finite(scan.arrivals[i].toa_s)) return Status::kNonFinite;
+    }
+    for (std::size_t i = 0; i < kMaxArrivals; ++i) {
+      if (i >= scan.count) break;
+      const auto& a = scan.arrivals[i];
+      if (a.beacon >= config_.toa.beacon_count || a.beacon >= kMaxBeacons) return Status::kOutOfRange;
+      if (!(a.toa_s > Scalar(0)) || a.toa_s > config_.max_toa_s) return Status::kOutOfRange;
+      z(Toa::channel(a.beacon, a.path)) = a.toa_s;
+    }
+    return Status::kOk;
+  }
+
+  /// Fix by multilateration, then one EKF update with the fix's inliers from
+  /// a wide prior centred on it. Works on `f`; records the fix in fix_.
+  Status initialise(Filter& f, const MeasVec& z, ChannelMask present) {
+    fix_ = multilaterate(f.measurement(), z, present, config_.init);
+    if (fix_.status != Status::kOk) return fix_.status;
+    State x0 = State::Zero();
+    x0(Layout::kX) = fix_.position_m(0);
+    x0(Layout::kY) = fix_.position_m(1);
+    x0(Layout::kZ) = fix_.position_m(2);
+    x0(Layout::kC) = config_.init.sound_speed_mps;
+    Cov P0 = Cov::Zero();
+    const Scalar sp = config_.initial_position_sigma_m;
+    const Scalar sv = config_.initial_velocity_sigma_mps;
+    const Scalar sc = config_.initial_sound_speed_sigma_mps;
+    for (int a = 0; a < 3; ++a) {
+      P0(Layout::kPos + a, Layout::kPos + a) = sp * sp;
+      P0(Layout::kVel + a, Layout::kVel + a) = sv * sv;
+    }
+    P0(Layout::kC, Layout::kC) = sc * sc;
+    Status s = f.reset(x0, P0);
+    if (s == Status::kOk) s = f.update(z, fix_.inliers);
+    if (s != Status::kOk) return s;
+    stats_.initialised = true;
+    stats_.fused_mask = fix_.inliers;
+    stats_.gated_mask = fix_.rejected;
+    stats_.fused = static_cast<std::uint8_t>(channel_count(fix_.inliers));
+    stats_.gated_out = static_cast<std::uint8_t>(channel_count(fix_.rejected));
+    stats_.predict_only = false;
+    return Status::kOk;
+  }
+
+  Config config_;
+  Filter filter_{};
+  MultilaterationResult<Scalar> fix_{};
+  UnderwaterStepStats stats_{};
+  UnderwaterCounters counters_{};
+  Report reports_[1]{};
+  std::size_t report_count_ = 0;
+  std::int64_t t_us_ = 0;
+  std::uint16_t empty_frames_ = 0;
+  bool have_time_ = false;
+  bool initialised_ = false;
+};
+
+/// Parameters of the underwater tracker in SI units (double), with the
+/// defaults of SPEC section 9, UW-003, and its "filter defaults that a check
+/// found workable". make_underwater_tracker() turns them into a Config.
+struct UnderwaterTrackerParams {
+  static constexpr int kMaxBeacons = 8;  ///< 8 beacons x 2 paths = hal::kMaxToaArrivals.
+  double beacons_m[kMaxBeacons][3] = {{0, 0, 0}, {2000, 0, 0}, {0, 2000, 0}, {2000, 2000, 0}};  ///< [x, y, depth], m.
+  std::uint8_t beacon_count = 4;              ///< Beacons in use.
+  double seabed_depth_m = 150.0;              ///< D, m.
+  double sigma_toa_s = 3e-3;                  ///< TOA noise sigma, s.
+  double accel_sigma_mps2 = 0.05;             ///< White acceleration per axis, m/s^2.
+  double sound_speed_sigma_mps_per_sqrt_s = 0.1;  ///< c random walk: sigma after 1 s, m/s.
+  double initial_sound_speed_mps = 1500.0;    ///< c of the first fix and of the filter start, m/s.
+  double initial_sound_speed_sigma_mps = 1.0; ///< Initial c sigma, m/s.
+  double initial_velocity_sigma_mps = 2.0;    ///< Initial velocity sigma per axis, m/s.
+  double initial_position_sigma_m = 100.0;    ///< Prior position sigma before the first update, m.
+  double gate_k_sigma = 2.0;                  ///< Per-channel gate multiplier k (paper: 2).
+  bool per_channel_gate = true;               ///< Per-channel gate on/off.
+  bool ellipsoidal_gate = false;              ///< Ellipsoidal gate on/off.
+  GateProbability ellipsoid_probability = GateProbability::k99;  ///< Its probability.
+  double reject_sigma = 3.0;                  ///< Multilateration rejection threshold, sigma.
+  double max_toa_s = 10.0;                    ///< Largest plausible arrival time, s.
+  std::uint16_t reacquire_after_empty_frames = 3;  ///< 0: never re-run the fix.
+};
+
+/// Tracker configuration from the parameters. Beacons past kMaxBeacons are ignored.
+template <class Scalar, int kMaxBeacons>
+UnderwaterTrackerConfig<Scalar, kMaxBeacons> underwater_tracker_config(const UnderwaterTrackerParams& p) {
+  using T = ScalarTraits<Scalar>;
+  UnderwaterTrackerConfig<Scalar, kMaxBeacons> c;
+  c.motion.accel_sigma_mps2 = T::from_double(p.accel_sigma_mps2);
+  c.motion.sound_speed_q_m2ps3 = T::from_double(p.sound_speed_sigma_mps_per_sqrt_s * p.sound_speed_sigma_mps_per_sqrt_s);
+  const int n = p.beacon_count < kMaxBeacons ? p.beacon_count : kMaxBeacons;
+  c.toa.beacon_count = static_cast<std::uint8_t>(n);
+  for (int i = 0; i < kMaxBeacons; ++i) {
+    if (i >= n) break;
+    c.toa.beacons_m[i] = Vec<Scalar, 3>(T::from_double(p.beacons_m[i][0]), T::from_double(p.beacons_m[i][1]),
+                                        T::from_double(p.beacons_m[i][2]));
+  }
+  c.toa.seabed_depth_m = T::from_double(p.seabed_depth_m);
+  c.toa.sigma_toa_s = T::from_double(p.sigma_toa_s);
+  c.gate.per_channel = p.per_channel_gate;
+  c.gate.k_sigma = T::from_double(p.gate_k_sigma);
+  c.gate.ellipsoidal = p.ellipsoidal_gate;
+  c.gate.ellipsoid_probability = p.ellipsoid_probability;
+  c.init.sound_speed_mps = T::from_double(p.initial_sound_speed_mps);
+  c.init.reject_sigma = T::from_double(p.reject_sigma);
+  c.initial_position_sigma_m = T::from_double(p.initial_position_sigma_m);
+  c.initial_velocity_sigma_mps = T::from_double(p.initial_velocity_sigma_mps);
+  c.initial_sound_speed_sigma_mps = T::from_double(p.initial_sound_speed_sigma_mps);
+  c.max_toa_s = T::from_double(p.max_toa_s);
+  c.reacquire_after_empty_frames = p.reacquire_after_empty_frames;
+  return c;
+}
+
+/// The underwater tracker with the given parameters.
+template <class Scalar, int kMaxBeacons = 4>
+UnderwaterTracker<Scalar, kMaxBeacons> make_underwater_tracker(const UnderwaterTrackerParams& p) {
+  return UnderwaterTracker<Scalar, kMaxBeacons>(underwater_tracker_config<Scalar, kMaxBeacons>(p));
+}
+
+}  // namespace kestrel

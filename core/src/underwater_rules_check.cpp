@@ -1,0 +1,37 @@
+// Compiles the underwater tracker of kestrel/tracking/underwater_tracker.hpp
+// (CV-3D + sound speed, multipath TOA, channel-gated EKF, multilateration)
+// for every supported floating scalar under the firmware rules
+// (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning wall with -Werror),
+// at the UW-003 size (4 beacons) and at the most a sonar frame can name
+// (8 beacons, 16 channels). Nothing links against it.
+#include "kestrel/filters/channel_gated_ekf.hpp"
+#include "kestrel/models/measurement/multipath_toa.hpp"
+#include "kestrel/models/motion/constant_velocity_3d_sound_speed.hpp"
+#include "kestrel/tracking/multilateration.hpp"
+#include "kestrel/tracking/tracker.hpp"
+#include "kestrel/tracking/underwater_tracker.hpp"
+
+namespace kestrel {
+
+template struct ConstantVelocity3DSoundSpeed<double>;
+template struct ConstantVelocity3DSoundSpeed<float>;
+template struct MultipathToa<ConstantVelocity3DSoundSpeed<double>, 4>;
+template struct MultipathToa<ConstantVelocity3DSoundSpeed<float>, 8>;
+template class ChannelGatedEkf<ConstantVelocity3DSoundSpeed<double>, MultipathToa<ConstantVelocity3DSoundSpeed<double>, 4>>;
+template class ChannelGatedEkf<ConstantVelocity3DSoundSpeed<float>, MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>>;
+template class ChannelGatedEkf<ConstantVelocity3DSoundSpeed<double>, MultipathToa<ConstantVelocity3DSoundSpeed<double>, 8>>;
+template class UnderwaterTracker<double, 4>;
+template class UnderwaterTracker<float, 4>;
+template class UnderwaterTracker<double, 8>;
+template class UnderwaterTracker<float, 8>;
+template UnderwaterTracker<float, 4> make_underwater_tracker<float, 4>(const UnderwaterTrackerParams&);
+template MultilaterationResult<float> multilaterate<MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>>(
+    const MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>&,
+    const MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>::Measurement&, ChannelMask,
+    const MultilaterationConfig<float>&);
+
+// With every channel present the channel-gated EKF is a drop-in tracking filter.
+static_assert(TrackingFilter<UnderwaterTracker<double, 4>::Filter>);
+static_assert(TrackingFilter<UnderwaterTracker<float, 8>::Filter>);
+
+}  // namespace kestrel
