@@ -1,0 +1,46 @@
+// `kestrel-sim uw`: Monte Carlo runs of the underwater scenarios (uw003 and
+// its variants; SPEC section 9) with the underwater tracker, scored with the
+// UW metrics (3D / horizontal / depth RMSE, sound-speed error std, gated-out
+// arrivals against the true outliers). Sonar frames, the 7-state estimate
+// and these metrics differ from the radar ones, so this is its own
+// subcommand; its files are listed in report/uw_files.hpp.
+//
+// `kestrel-sim uw --study` runs every variant with the paper's gate (k = 2),
+// k = 3 and no gate, and writes the comparison table (uw_study.md / .json).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace kestrel::sim::cli {
+
+struct UwOptions {
+  std::string scenario = "uw003";
+  std::size_t runs = 200;
+  std::uint64_t seed = 0;
+  unsigned jobs = 1;
+  std::string out;  ///< Default results/<scenario> (results/uw_study with --study).
+  bool plots = true;
+  bool study = false;
+  double budget_us = 1000.0;
+  // Tracker overrides (unset = UnderwaterTrackerParams default).
+  std::optional<double> gate_k;
+  bool no_gate = false;
+  bool ellipsoidal = false;
+  std::optional<double> ellipsoid_probability;  ///< 0.90, 0.95, 0.99, 0.995 or 0.999.
+  std::optional<double> accel_sigma_mps2;
+  std::optional<double> sound_speed_sigma;      ///< m/s per sqrt(s).
+  std::optional<unsigned> reacquire_after;      ///< 0 = never.
+};
+
+/// Register the subcommand and its options on `app`.
+CLI::App* add_uw_command(CLI::App& app, UwOptions& options);
+
+int cmd_uw(const UwOptions& options);
+
+}  // namespace kestrel::sim::cli

@@ -1,0 +1,53 @@
+// One UW run through the board loop (SPEC section 8), and Monte Carlo over
+// seeds. The scenario's sonar wire frames are encoded into a byte stream and
+// driven exactly as a board drives them: host::StreamFileFeed ->
+// hal::SonarAdapter (nanoseconds to seconds) -> UnderwaterTracker::step
+// (core/include/kestrel/tracking/underwater_tracker.hpp) -> host::MemorySink,
+// inside hal::Runner and timed by host::SteadyClock. Per frame it keeps the
+// estimate, its covariance and which channels were fused or gated, so the
+// metrics can compare the gate with the true outliers.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "kestrel/hal/runner.hpp"
+#include "kestrel/status.hpp"
+#include "kestrel/tracking/underwater_tracker.hpp"
+#include "scenarios/uw003.hpp"
+
+namespace kestrel::sim {
+
+struct UwFrameOutcome {
+  Status status = Status::kOk;   ///< Runner::poll_once() result.
+  bool stepped = false;          ///< Reached UnderwaterTracker::step.
+  std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
+  bool reported = false;         ///< The tracker published an estimate.
+  bool initialised = false;      ///< This frame (re)started the track from a fix.
+  bool predict_only = false;     ///< Tracked frame with nothing fused.
+  std::array<double, 7> x{};     ///< [x y z vx vy vz c] (m, m/s, m/s).
+  std::array<double, 9> p_pos{}; ///< Position covariance, row-major 3 x 3, m^2.
+  std::array<double, 7> sd{};    ///< Square roots of the diagonal of P.
+  std::uint32_t present = 0;     ///< Channels in the frame (bit 2 beacon + path).
+  std::uint32_t fused = 0;       ///< Channels fused.
+  std::uint32_t gated = 0;       ///< Channels gated out (or rejected by the fix).
+  double nis = 0.0;              ///< NIS over the fused channels.
+};
+
+struct UwRunOutput {
+  std::vector<UwFrameOutcome> frames;  ///< One per wire frame, in order.
+  hal::RunnerStats stats;
+};
+
+/// Tracker parameters for a scenario: the installation (beacons, seabed,
+/// TOA sigma) from the scenario, everything else from `base`.
+UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario,
+                                      const UnderwaterTrackerParams& base = UnderwaterTrackerParams{});
+
+/// Run the tracker with `params` over the run's frames.
+UwRunOutput run_uw(const UwScenarioRun& run, const UnderwaterTrackerParams& params, std::uint64_t budget_ns);
+
+}  // namespace kestrel::sim

@@ -1,0 +1,216 @@
+#include "report/uw_files.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <stdexcept>
+
+#ifndef KESTREL_SIM_PLOT_SCRIPT
+#error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
+#endif
+
+namespace kestrel::sim {
+
+namespace {
+
+std::ofstream open_out(const std::filesystem::path& path) {
+  std::ofstream out(path, std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot create '" + path.string() + "'");
+  out.precision(10);
+  return out;
+}
+
+/// A number, or an empty cell for NaN.
+std::string cell(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.10g", v);
+  return buf;
+}
+
+nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+nlohmann::json ci_json(const MeanCi& m) {
+  return {{"mean", num(m.mean)}, {"ci95_low", num(m.ci95_low)}, {"ci95_high", num(m.ci95_high)}, {"n", m.n}};
+}
+
+nlohmann::json series(const std::vector<double>& v) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const double x : v) a.push_back(num(x));
+  return a;
+}
+
+const char* path_name(hal::ToaPath p) { return p == hal::ToaPath::kDirect ? "direct" : "reflected"; }
+
+}  // namespace
+
+void write_uw_runs_csv(const std::filesystem::path& path, const std::vector<UwRunMetrics>& runs) {
+  std::ofstream out = open_out(path);
+  out << "seed,init_frame,scored_frames,rmse_3d_m,rmse_h_m,rmse_depth_m,peak_3d_m,nees,c_err_mean_mps,"
+         "c_err_std_mps,arrivals,outliers,outliers_gated,good_gated,gated,predict_only,reinitialisations,"
+         "frames_refused,depth_reflections\n";
+  for (const UwRunMetrics& r : runs) {
+    out << r.seed << ',' << r.init_frame << ',' << r.scored_frames << ',' << cell(r.rmse_3d_m) << ','
+        << cell(r.rmse_h_m) << ',' << cell(r.rmse_depth_m) << ',' << cell(r.peak_3d_m) << ',' << cell(r.nees) << ','
+        << cell(r.c_err_mean_mps) << ',' << cell(r.c_err_std_mps) << ',' << r.arrivals << ',' << r.outliers << ','
+        << r.outliers_gated << ',' << r.good_gated << ',' << r.gated << ',' << r.predict_only << ','
+        << r.reinitialisations << ',' << r.frames_refused << ',' << r.depth_reflections << '\n';
+  }
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+void write_uw_steps_csv(const std::filesystem::path& path, const UwSummary& s) {
+  std::ofstream out = open_out(path);
+  out << "frame,runs_scored,rmse_3d_m,rmse_h_m,rmse_depth_m,c_err_rms_mps\n";
+  for (std::size_t k = 0; k < s.step_runs.size(); ++k) {
+    out << k << ',' << s.step_runs[k] << ',' << cell(s.step_rmse_3d_m[k]) << ',' << cell(s.step_rmse_h_m[k]) << ','
+        << cell(s.step_rmse_depth_m[k]) << ',' << cell(s.step_c_err_rms_mps[k]) << '\n';
+  }
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& run, const UwRunOutput& out) {
+  const std::size_t n = std::min(run.frames.size(), out.frames.size());
+  {
+    std::ofstream f = open_out(dir / "uw_truth.csv");
+    f << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps\n";
+    for (const UwTruth& t : run.truth) {
+      f << cell(t.t_s) << ',' << cell(t.x_m) << ',' << cell(t.y_m) << ',' << cell(t.z_m) << ',' << cell(t.vx_mps)
+        << ',' << cell(t.vy_mps) << ',' << cell(t.vz_mps) << ',' << cell(t.c_mps) << '\n';
+    }
+  }
+  {
+    std::ofstream f = open_out(dir / "uw_arrivals.csv");
+    f << "frame,time_s,beacon,path,true_toa_s,toa_s,wire_toa_ns,outlier,outlier_ms,fused,gated\n";
+    for (std::size_t k = 0; k < n; ++k) {
+      const UwFrameRecord& fr = run.frames[k];
+      const UwFrameOutcome& o = out.frames[k];
+      for (std::size_t i = 0; i < fr.arrivals.size(); ++i) {
+        const UwArrivalRecord& a = fr.arrivals[i];
+        const std::uint32_t bit = 1u << (2u * a.beacon + static_cast<std::uint32_t>(a.path));
+        f << k << ',' << cell(run.truth[k].t_s) << ',' << static_cast<int>(a.beacon) << ',' << path_name(a.path)
+          << ',' << cell(a.true_toa_s) << ',' << cell(a.toa_s) << ',' << fr.wire.sonar[i].time_of_flight_ns << ','
+          << (a.outlier ? 1 : 0) << ',' << cell(a.outlier_s * 1e3) << ',' << ((o.fused & bit) != 0 ? 1 : 0) << ','
+          << ((o.gated & bit) != 0 ? 1 : 0) << '\n';
+      }
+    }
+  }
+  {
+    std::ofstream f = open_out(dir / "uw_track.csv");
+    f << "frame,time_s,status,reported,initialised,predict_only,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"
+         "sd_x_m,sd_y_m,sd_z_m,sd_vx_mps,sd_vy_mps,sd_vz_mps,sd_c_mps,fused,gated,nis,step_ns\n";
+    for (std::size_t k = 0; k < n; ++k) {
+      const UwFrameOutcome& o = out.frames[k];
+      f << k << ',' << cell(run.truth[k].t_s) << ',' << to_string(o.status) << ',' << (o.reported ? 1 : 0) << ','
+        << (o.initialised ? 1 : 0) << ',' << (o.predict_only ? 1 : 0);
+      for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.x[i]) : "");
+      for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.sd[i]) : "");
+      int fused = 0, gated = 0;
+      for (int b = 0; b < 32; ++b) {
+        fused += static_cast<int>((o.fused >> b) & 1u);
+        gated += static_cast<int>((o.gated >> b) & 1u);
+      }
+      f << ',' << fused << ',' << gated << ',' << (o.reported ? cell(o.nis) : "") << ',' << o.step_ns << '\n';
+    }
+  }
+}
+
+nlohmann::json uw_params_json(const UnderwaterTrackerParams& p) {
+  nlohmann::json beacons = nlohmann::json::array();
+  for (int i = 0; i < p.beacon_count && i < UnderwaterTrackerParams::kMaxBeacons; ++i) {
+    beacons.push_back({p.beacons_m[i][0], p.beacons_m[i][1], p.beacons_m[i][2]});
+  }
+  return {{"beacons_m", beacons},
+          {"seabed_depth_m", p.seabed_depth_m},
+          {"sigma_toa_s", p.sigma_toa_s},
+          {"accel_sigma_mps2", p.accel_sigma_mps2},
+          {"sound_speed_sigma_mps_per_sqrt_s", p.sound_speed_sigma_mps_per_sqrt_s},
+          {"initial_sound_speed_mps", p.initial_sound_speed_mps},
+          {"initial_sound_speed_sigma_mps", p.initial_sound_speed_sigma_mps},
+          {"initial_velocity_sigma_mps", p.initial_velocity_sigma_mps},
+          {"initial_position_sigma_m", p.initial_position_sigma_m},
+          {"per_channel_gate", p.per_channel_gate},
+          {"gate_k_sigma", p.gate_k_sigma},
+          {"ellipsoidal_gate", p.ellipsoidal_gate},
+          {"reject_sigma", p.reject_sigma},
+          {"reacquire_after_empty_frames", p.reacquire_after_empty_frames}};
+}
+
+nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrackerParams& params,
+                               const UwMonteCarloConfig& config, const UwSummary& s) {
+  nlohmann::json beacons = nlohmann::json::array();
+  for (const auto& b : sc.beacons_m) beacons.push_back({b[0], b[1], b[2]});
+  nlohmann::json j;
+  j["schema"] = "kestrel-sim-uw-summary/1";
+  j["scenario"] = {{"name", sc.name},
+                   {"description", sc.description},
+                   {"frames", sc.frames},
+                   {"period_s", sc.period_s},
+                   {"beacons_m", beacons},
+                   {"seabed_depth_m", sc.seabed_depth_m},
+                   {"sigma_toa_s", sc.sigma_toa_s},
+                   {"reflected", sc.reflected},
+                   {"outlier_probability", sc.outlier_probability},
+                   {"sound_speed_step_mps", sc.sound_speed_step_mps},
+                   {"sound_speed_limit_mps", sc.sound_speed_limit_mps},
+                   {"accel_sigma_mps2", sc.accel_sigma_mps2}};
+  j["tracker"] = uw_params_json(params);
+  j["runs"] = s.runs;
+  j["seeds"] = {config.base_seed, config.base_seed + config.runs - 1};
+  j["rmse_3d_m"] = ci_json(s.rmse_3d_m);
+  j["rmse_h_m"] = ci_json(s.rmse_h_m);
+  j["rmse_depth_m"] = ci_json(s.rmse_depth_m);
+  j["peak_3d_m"] = ci_json(s.peak_3d_m);
+  j["nees"] = ci_json(s.nees);
+  j["c_err_std_per_run_mps"] = ci_json(s.c_err_std_mps);
+  j["c_err_mean_per_run_mps"] = ci_json(s.c_err_mean_mps);
+  j["c_err_std_pooled_mps"] = num(s.pooled_c_err_std_mps);
+  j["c_err_mean_pooled_mps"] = num(s.pooled_c_err_mean_mps);
+  j["gate"] = {{"arrivals", s.arrivals},       {"outliers", s.outliers},
+               {"outliers_gated", s.outliers_gated}, {"good_gated", s.good_gated},
+               {"gated", s.gated},             {"predict_only_frames", s.predict_only}};
+  j["runs_not_initialised"] = s.runs_not_initialised;
+  j["runs_late_init"] = s.runs_late_init;
+  j["reinitialisations"] = s.reinitialisations;
+  j["frames_refused"] = s.frames_refused;
+  j["depth_reflections"] = s.depth_reflections;
+  j["per_step"] = {{"runs_scored", s.step_runs},
+                   {"rmse_3d_m", series(s.step_rmse_3d_m)},
+                   {"rmse_h_m", series(s.step_rmse_h_m)},
+                   {"rmse_depth_m", series(s.step_rmse_depth_m)},
+                   {"c_err_rms_mps", series(s.step_c_err_rms_mps)}};
+  j["timing_ns"] = {{"steps", s.timing.steps},       {"min", s.timing.min_ns},   {"median", s.timing.median_ns},
+                    {"p99", s.timing.p99_ns},         {"max", s.timing.max_ns},   {"mean", s.timing.mean_ns},
+                    {"budget", s.timing.budget_ns},   {"overruns", s.timing.overruns}};
+  return j;
+}
+
+void write_uw_json(const std::filesystem::path& path, const nlohmann::json& j) {
+  std::ofstream out = open_out(path);
+  out << j.dump(2) << '\n';
+  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+bool plot_uw(const std::filesystem::path& dir, const std::string& title) {
+  // plots/uw_plots.py sits beside plot_results.py; the interpreter is the
+  // one plot_runner uses (KESTREL_PYTHON overrides it).
+  const auto quote = [](const std::string& v) {
+    std::string q = "'";
+    for (const char ch : v) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+  };
+  const char* py = std::getenv("KESTREL_PYTHON");
+  const std::string python = py != nullptr && *py != '\0' ? py : "/usr/bin/python3";
+  const std::filesystem::path script = std::filesystem::path(KESTREL_SIM_PLOT_SCRIPT).parent_path() / "uw_plots.py";
+  const std::string cmd =
+      quote(python) + " " + quote(script.string()) + " --dir " + quote(dir.string()) + " --title " + quote(title);
+  std::fflush(stdout);
+  const int rc = std::system(cmd.c_str());
+  if (rc == 0) return true;
+  std::fprintf(stderr, "warning: UW plotting failed (status %d); results are unaffected. Command: %s\n", rc,
+               cmd.c_str());
+  return false;
+}
+
+}  // namespace kestrel::sim
