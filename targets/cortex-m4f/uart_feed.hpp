@@ -1,0 +1,67 @@
+// The board's UART link (USART2 on PA2/PA3, 8N1 at kUartBaud) and the
+// MeasurementFeed built on it. One interrupt handler serves both directions:
+//   RX: every received byte goes into a hal::ByteRingBuffer (ISR producer,
+//       main-loop consumer); UartRingFeed::poll() moves the buffered bytes
+//       into a hal::FrameAssembler and returns the next decoded frame.
+//   TX: the track sink (uart_sink.hpp) pushes whole report records into a
+//       second ring and calls usart2_kick_tx(); the TXE interrupt drains it.
+// Nothing here blocks: a full RX ring drops bytes (counted; the frame's CRC
+// then fails and the assembler resynchronises), an empty one gives kNoData.
+#pragma once
+
+#include <cstdint>
+
+#include "board_config.hpp"
+#include "kestrel/hal/frame.hpp"
+#include "kestrel/hal/frame_assembler.hpp"
+#include "kestrel/hal/ring_buffer.hpp"
+#include "kestrel/status.hpp"
+
+namespace kestrel::m4f {
+
+using RxRing = hal::ByteRingBuffer<kRxRingBytes>;
+using TxRing = hal::ByteRingBuffer<kTxRingBytes>;
+
+/// The USART2 receive ring (filled by USART2_IRQHandler).
+RxRing& usart2_rx_ring();
+/// The USART2 transmit ring (drained by USART2_IRQHandler).
+TxRing& usart2_tx_ring();
+
+/// Clock, pins, baud rate and receive interrupt of USART2. Call once after
+/// configure_clocks() (the divisor assumes kApb1Hz).
+void usart2_start();
+
+/// Make sure the TXE interrupt is on so the ISR drains the transmit ring.
+/// Call after pushing bytes; harmless when already sending.
+void usart2_kick_tx();
+
+/// Receive-side line errors counted by the ISR since start (each wraps at 2^32).
+struct UartLineErrors {
+  std::uint32_t overrun;  ///< A byte arrived before the previous one was read (lost).
+  std::uint32_t framing;  ///< Stop bit missing (byte kept; the frame CRC decides).
+  std::uint32_t noise;    ///< Noise flag on a received byte (byte kept).
+};
+[[nodiscard]] UartLineErrors usart2_line_errors();
+
+/// MeasurementFeed over a receive ring: bytes -> FrameAssembler -> frames.
+class UartRingFeed {
+ public:
+  explicit UartRingFeed(RxRing& ring) : ring_(ring) {}
+
+  /// Return the next frame, never blocking. Work per call: at most two
+  /// decode attempts and one copy of the ring's contents.
+  /// @return kOk (frame filled); kNoData (no complete frame yet);
+  ///         kTooManyCandidates (frame filled with its first capacity
+  ///         items); or the status of bytes the assembler dropped: kBadMagic,
+  ///         kMalformedFrame, kUnsupportedVersion, kUnknownKind, kBadCrc.
+  [[nodiscard]] Status poll(hal::Frame& frame);
+
+  /// The assembler's per-status counters and skipped-byte count.
+  const hal::FrameAssembler<kAssemblerBytes>& assembler() const { return assembler_; }
+
+ private:
+  RxRing& ring_;
+  hal::FrameAssembler<kAssemblerBytes> assembler_{};
+};
+
+}  // namespace kestrel::m4f

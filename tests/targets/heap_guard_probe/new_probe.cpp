@@ -1,0 +1,8 @@
+// Negative probe: operator new and delete. The board's link must refuse it
+// with "undefined reference to `__wrap__Znwj'".
+extern "C" [[noreturn]] void Reset_Handler() {
+  int* volatile p = new int(42);
+  delete p;
+  for (;;) {
+  }
+}
