@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_pcl.hpp"
+#include "cli/cmd_r2aekf.hpp"
 #include "cli/commands.hpp"
 
 namespace {
@@ -88,6 +89,9 @@ int main(int argc, char** argv) {
   PclOptions pcl;
   CLI::App* pcl_cmd = add_pcl_command(app, pcl);
 
+  kestrel::sim::R2AekfStudyOptions r2aekf;
+  CLI::App* r2aekf_cmd = add_r2aekf_command(app, r2aekf);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -98,6 +102,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
     if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
+    if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());
     return 1;

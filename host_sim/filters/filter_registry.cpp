@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "filters/ekf_ca.hpp"
+#include "filters/r2aekf_filters.hpp"
 
 namespace kestrel::sim {
 
@@ -14,6 +15,12 @@ const FilterEntry kFilters[] = {
      hal::FrameKind::kRadar, &ekf_ca_setup, &run_ekf_ca},
     {"ekf-ca-f32", "the same EKF-CA in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar,
      &ekf_ca_f32_setup, &run_ekf_ca_f32},
+    {"r2aekf", "R2-AEKF default mode (SPEC 5 corrections) on EKF-CA; double", hal::FrameKind::kRadar, &r2aekf_setup,
+     &run_r2aekf},
+    {"r2aekf-paper", "R2-AEKF paper mode (paper 000 eqs. 7-18 as printed); double", hal::FrameKind::kRadar,
+     &r2aekf_paper_setup, &run_r2aekf_paper},
+    {"r2aekf-f32", "R2-AEKF default mode in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &r2aekf_f32_setup,
+     &run_r2aekf_f32},
 };
 }  // namespace
 
