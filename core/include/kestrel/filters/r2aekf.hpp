@@ -269,7 +269,9 @@ class R2Aekf {
   }
 
   /// Innovation of z with the current R_k (the one the next update starts
-  /// from, SPEC 5 step 1). Pure: the gate uses it.
+  /// from, SPEC 5 step 1). Observably pure: the gate uses it. It remembers
+  /// its result so that update() of the same z can reuse it (one object is
+  /// not to be used from two threads at once, like any filter here).
   Innov innovation(const MeasVec& z) const {
     cached_ = ekf_.innovation(z, measurement_noise());
     cached_z_ = z;
