@@ -6,6 +6,12 @@
 
 #include "support/alloc_guard.hpp"
 
+namespace {
+// The optimiser may delete a malloc/free pair whose memory is never used;
+// publishing the pointer through a volatile keeps the call.
+void* volatile g_sink = nullptr;
+}  // namespace
+
 SCENARIO("the allocation guard counts heap use", "[support][alloc]") {
   GIVEN("a guard") {
     std::size_t counted_new = 0;
@@ -13,10 +19,11 @@ SCENARIO("the allocation guard counts heap use", "[support][alloc]") {
     {
       kestrel::test::AllocationGuard guard;
       auto p = std::make_unique<int>(3);
+      g_sink = p.get();
       counted_new = guard.allocations();
-      void* m = std::malloc(16);
+      g_sink = std::malloc(16);
       counted_malloc = guard.allocations() - counted_new;
-      std::free(m);
+      std::free(g_sink);
     }
     THEN("operator new is counted") { CHECK(counted_new >= 1); }
     THEN("malloc is counted where it is interposed") {

@@ -27,7 +27,9 @@ SCENARIO("the polar radar Jacobian matches central differences", "[models][polar
           xp(c) += h;
           xm(c) -= h;
           // residual() wraps, so a difference across the bearing cut stays small.
-          const auto d = radar.residual(radar.predict(xp), radar.predict(xm)) / (2 * h);
+          // Evaluate into a value: auto would keep an Eigen expression that
+          // refers to the temporary residual after it is destroyed.
+          const Radar::Measurement d = radar.residual(radar.predict(xp), radar.predict(xm)) / (2 * h);
           // Central differences are O(h^2) accurate: relative 1e-6 of the
           // largest entry is far above that error and far below a wrong term.
           const double scale = std::max(1e-12, H.row(0).cwiseAbs().maxCoeff());
