@@ -21,19 +21,10 @@ include_guard(GLOBAL)
 
 set(KESTREL_M4F_DIR ${CMAKE_CURRENT_LIST_DIR})
 
-# Allocation entry points: newlib (plain and reentrant), the sbrk layer
-# under them, and every global operator new/delete of the ILP32 ABI
-# (size_t = unsigned int -> 'j' in the mangled names).
-set(KESTREL_M4F_HEAP_SYMBOLS
-  malloc free calloc realloc reallocf memalign aligned_alloc posix_memalign valloc pvalloc
-  _malloc_r _free_r _calloc_r _realloc_r _reallocf_r _memalign_r _valloc_r _pvalloc_r
-  _sbrk _sbrk_r
-  _Znwj _Znaj _ZnwjRKSt9nothrow_t _ZnajRKSt9nothrow_t
-  _ZnwjSt11align_val_t _ZnajSt11align_val_t
-  _ZnwjSt11align_val_tRKSt9nothrow_t _ZnajSt11align_val_tRKSt9nothrow_t
-  _ZdlPv _ZdaPv _ZdlPvj _ZdaPvj _ZdlPvRKSt9nothrow_t _ZdaPvRKSt9nothrow_t
-  _ZdlPvSt11align_val_t _ZdaPvSt11align_val_t _ZdlPvjSt11align_val_t _ZdaPvjSt11align_val_t
-  _ZdlPvSt11align_val_tRKSt9nothrow_t _ZdaPvSt11align_val_tRKSt9nothrow_t)
+# Allocation entry points (newlib, glibc, every global operator new/delete
+# of the ILP32 ABI: size_t = unsigned int -> 'j' in the mangled names) and
+# the guard itself: targets/common/evidence.cmake, shared by every board.
+include(${CMAKE_CURRENT_LIST_DIR}/../common/evidence.cmake)
 
 if(NOT TARGET kestrel_m4f_codegen)
   add_library(kestrel_m4f_codegen INTERFACE)
@@ -56,8 +47,7 @@ if(NOT TARGET kestrel_m4f_codegen)
 endif()
 
 function(kestrel_m4f_image target)
-  list(TRANSFORM KESTREL_M4F_HEAP_SYMBOLS PREPEND "--wrap=" OUTPUT_VARIABLE wraps)
-  list(JOIN wraps "," wraps)
+  kestrel_heap_guard(${target} j)
   target_link_options(${target} PRIVATE
     -nostartfiles                      # startup.cpp is the whole start-up
     --specs=nano.specs                 # newlib-nano libc and libstdc++
@@ -65,7 +55,6 @@ function(kestrel_m4f_image target)
     -Wl,--gc-sections
     -Wl,--print-memory-usage
     "-Wl,-Map=$<TARGET_FILE:${target}>.map"
-    -Wl,--cref
-    "-Wl,${wraps}")
+    -Wl,--cref)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${KESTREL_M4F_DIR}/stm32f407.ld)
 endfunction()

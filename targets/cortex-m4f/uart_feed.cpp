@@ -1,5 +1,5 @@
-// USART2 driver (registers, interrupt handler, both rings) and the feed's
-// poll(). See uart_feed.hpp for the data path.
+// USART2 driver (registers, interrupt handler, both rings). See
+// uart_feed.hpp for the data path.
 #include "uart_feed.hpp"
 
 #include <atomic>
@@ -69,15 +69,6 @@ void usart2_kick_tx() {
 UartLineErrors usart2_line_errors() {
   return {g_overruns.load(std::memory_order_relaxed), g_framing_errors.load(std::memory_order_relaxed),
           g_noise_errors.load(std::memory_order_relaxed)};
-}
-
-Status UartRingFeed::poll(hal::Frame& frame) {
-  // Drain what is already assembled first, so a burst of frames is handed
-  // out one per call without touching the ring.
-  const Status buffered = assembler_.next(frame);
-  if (buffered != Status::kNoData) return buffered;
-  if (assembler_.pull(ring_) == 0) return Status::kNoData;
-  return assembler_.next(frame);
 }
 
 }  // namespace kestrel::m4f

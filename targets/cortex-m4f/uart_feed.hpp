@@ -12,10 +12,8 @@
 #include <cstdint>
 
 #include "board_config.hpp"
-#include "kestrel/hal/frame.hpp"
-#include "kestrel/hal/frame_assembler.hpp"
+#include "kestrel/board/ring_feed.hpp"
 #include "kestrel/hal/ring_buffer.hpp"
-#include "kestrel/status.hpp"
 
 namespace kestrel::m4f {
 
@@ -43,25 +41,9 @@ struct UartLineErrors {
 };
 [[nodiscard]] UartLineErrors usart2_line_errors();
 
-/// MeasurementFeed over a receive ring: bytes -> FrameAssembler -> frames.
-class UartRingFeed {
- public:
-  explicit UartRingFeed(RxRing& ring) : ring_(ring) {}
-
-  /// Return the next frame, never blocking. Work per call: at most two
-  /// decode attempts and one copy of the ring's contents.
-  /// @return kOk (frame filled); kNoData (no complete frame yet);
-  ///         kTooManyCandidates (frame filled with its first capacity
-  ///         items); or the status of bytes the assembler dropped: kBadMagic,
-  ///         kMalformedFrame, kUnsupportedVersion, kUnknownKind, kBadCrc.
-  [[nodiscard]] Status poll(hal::Frame& frame);
-
-  /// The assembler's per-status counters and skipped-byte count.
-  const hal::FrameAssembler<kAssemblerBytes>& assembler() const { return assembler_; }
-
- private:
-  RxRing& ring_;
-  hal::FrameAssembler<kAssemblerBytes> assembler_{};
-};
+/// MeasurementFeed over the USART2 receive ring: bytes -> FrameAssembler
+/// -> frames (targets/common/include/kestrel/board/ring_feed.hpp). poll()
+/// never blocks; see RingFeed::poll for the statuses.
+using UartRingFeed = board::RingFeed<RxRing, kAssemblerBytes>;
 
 }  // namespace kestrel::m4f

@@ -34,7 +34,7 @@ bad=$(printf '%s\n' "$syms" | grep -E -x \
 $bad"
 echo "nm: no heap, operator new/delete, printf-family or exception symbols"
 
-"$cmake" -DNM=arm-none-eabi-nm -DELF="$elf" -P "$src/targets/cortex-m4f/check_symbols.cmake" \
+"$cmake" -DNM=arm-none-eabi-nm -DELF="$elf" -P "$src/targets/common/check_symbols.cmake" \
   || fail "check_symbols.cmake rejected the image"
 
 text=$(arm-none-eabi-size -A "$elf" | awk '$1 == ".text" {print $2}')

@@ -1,5 +1,5 @@
 // Negative probe: operator new and delete. The board's link must refuse it
-// with "undefined reference to `__wrap__Znwj'".
+// with "undefined reference to `__wrap__Znwj'" (ILP32) or `__wrap__Znwm' (LP64).
 extern "C" [[noreturn]] void Reset_Handler() {
   int* volatile p = new int(42);
   delete p;

@@ -1,38 +1,51 @@
 #!/usr/bin/env python3
-"""Worst-case stack depth of the M4F image's call chains (docs/footprint.md).
+"""Worst-case stack depth of a board image's call chains (docs/footprint.md).
 
 Inputs:
   * the .ci files GCC writes with -fcallgraph-info=su beside each object
-    (image.cmake): one node per function emitted, with its frame size
-    ("N bytes (static)"; "dynamic" if it uses alloca/VLAs) and one edge per
-    call site that survived inlining;
+    (each board's image.cmake): one node per function emitted, with its
+    frame size ("N bytes (static)"; "dynamic" if it uses alloca/VLAs) and one
+    edge per call site that survived inlining;
   * the linked ELF, disassembled with objdump, for the functions no .ci
-    describes (newlib's libm and libc, libgcc's soft-float helpers): frame =
-    push + vpush + "sub sp, #N" of the prologue, callees = bl/b.w targets.
+    describes (libm, libc, libgcc's soft-float helpers). ARM (Thumb-2):
+    frame = push + vpush + "sub sp, #N" of the prologue, callees = bl/b.w
+    targets. RISC-V: frame = the "addi sp,sp,-N" (or "li t, N; sub sp,sp,t")
+    of the prologue, callees = jal/jalr/call targets, tail calls = j/jr/tail
+    to another function.
 
-For each root the script walks every call path (the graph must be acyclic:
-recursion is reported as an error, as SPEC section 1 forbids it) and prints
+For each root the script walks every call path (Kestrel's own functions
+must not recurse: that is an error, as SPEC section 1 forbids it; a C
+library routine that calls itself is counted one extra level deep, with a
+note) and prints
 the deepest one with the frame of each function on it. The sum is the stack
 the chain needs below the caller's SP; a function's frame includes the
-registers it saves and its locals, and a call adds nothing else on ARM (the
-return address is in LR, saved by the callee's push and so counted in its
-frame).
+registers it saves and its locals, and a call adds nothing else on ARM or
+RISC-V (the return address is in LR/ra, saved by the callee's prologue and
+so counted in its frame).
 
-Usage (the build wires it to the kestrel-m4f-stack-report target):
+Budget: with --budget N the worst chain from the roots matching
+--budget-root (default: Tracker<...>::step) must be at most N bytes, or the
+script exits 1 (and with --reject renames the ELF to <elf>.rejected, so the
+failure repeats on the next build, as the size and symbol checks do).
+
+Usage (each board wires it as a post-link step and a <image>-stack-report target):
   stack_report.py --elf kestrel-m4f.elf --objdump arm-none-eabi-objdump \
                   --ci-dir <object dir> [--ci-dir ...] [--root REGEX ...] [--out stack.txt]
+                  [--budget BYTES [--budget-root REGEX]] [--json stack.json] [--reject]
 """
 
 import argparse
+import json
 import os
 import re
 import subprocess
 import sys
 
+STEP_ROOT = r"kestrel::Tracker<.*>::step\("
 DEFAULT_ROOTS = [
-    r"kestrel::Tracker<.*>::step\(",
-    r"^kestrel::m4f::firmware_main\(\)$",
-    r"^USART2_IRQHandler$",
+    STEP_ROOT,
+    r"^kestrel::[a-z0-9_]+::firmware_main\(\)$",
+    r"_IRQHandler$",
     r"^Reset_Handler$",
     r"^_GLOBAL__sub_I_",
 ]
@@ -85,8 +98,10 @@ def load_elf(objdump, elf):
     """Prologue frame size and direct callees of every function in the ELF."""
     text = subprocess.run([objdump, "-d", "--no-show-raw-insn", elf], capture_output=True, text=True,
                           check=True).stdout
+    riscv = "riscv" in os.path.basename(objdump)
     frames, calls, indirect = {}, {}, set()
     current, in_prologue = None, 0
+    last_li = {}
     func_re = re.compile(r"^[0-9a-f]+ <([^>]+)>:$")
     insn_re = re.compile(r"^\s*[0-9a-f]+:\s+(\S+)\s*(.*)$")
     for line in text.splitlines():
@@ -95,12 +110,40 @@ def load_elf(objdump, elf):
             current = m.group(1)
             frames[current] = 0
             calls[current] = set()
-            in_prologue = 12
+            in_prologue = 12 if not riscv else 64
+            last_li = {}
             continue
         m = insn_re.match(line)
         if not m or current is None:
             continue
         op, args = m.group(1), m.group(2)
+        target = re.search(r"<([^>]+)>\s*$", args)
+        target_name = target.group(1) if target else None
+        if riscv:
+            if in_prologue:
+                in_prologue -= 1
+                a = args.replace(" ", "")
+                mm = re.match(r"sp,sp,-(\d+)$", a)
+                if op in ("add", "addi", "c.addi", "c.addi16sp") and mm:
+                    frames[current] += int(mm.group(1))
+                mm = re.match(r"([a-z0-9]+),(-?\d+)$", a)
+                if op in ("li", "c.li") and mm:
+                    last_li[mm.group(1)] = int(mm.group(2))
+                mm = re.match(r"sp,sp,([a-z][a-z0-9]*)$", a)
+                if mm and mm.group(1) in last_li:
+                    if op == "sub" and last_li[mm.group(1)] > 0:
+                        frames[current] += last_li[mm.group(1)]
+                    elif op == "add" and last_li[mm.group(1)] < 0:
+                        frames[current] += -last_li[mm.group(1)]
+            if op in ("jal", "jalr", "call", "c.jal", "c.jalr"):
+                if target_name and "+" not in target_name:
+                    calls[current].add(target_name)
+                elif op in ("jalr", "c.jalr") and not target_name:
+                    indirect.add(current)
+            elif op in ("j", "jr", "tail", "c.j", "c.jr") and target_name and "+" not in target_name \
+                    and target_name != current:
+                calls[current].add(target_name)  # tail call into another function
+            continue
         if in_prologue:
             in_prologue -= 1
             if op in ("push", "push.w", "stmdb") and ("sp!" in args or op.startswith("push")):
@@ -123,6 +166,26 @@ def load_elf(objdump, elf):
             indirect.add(current)
         elif op in ("b.w", "b") and target and target.group(1) != current and "+" not in args.split("<")[1]:
             calls[current].add(target.group(1))  # tail call into another function
+    # objdump labels each address with one of its names (__hypot, not
+    # hypot): give every alias nm knows the same frame and callees.
+    nm = re.sub(r"objdump$", "nm", objdump)
+    try:
+        listing = subprocess.run([nm, elf], capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        listing = ""
+    by_addr = {}
+    for line in listing.splitlines():
+        parts = line.split()
+        if len(parts) == 3 and parts[1] in "TtWw":
+            by_addr.setdefault(int(parts[0], 16), []).append(parts[2])
+    for m in re.finditer(r"^([0-9a-f]+) <([^>]+)>:$", text, re.M):
+        label, addr = m.group(2), int(m.group(1), 16)
+        for alias in by_addr.get(addr, []):
+            if alias not in frames:
+                frames[alias] = frames[label]
+                calls[alias] = calls[label]
+                if label in indirect:
+                    indirect.add(alias)
     return frames, calls, indirect
 
 
@@ -161,6 +224,12 @@ def main():
                     help="object directory of a target linked into the image (repeatable)")
     ap.add_argument("--root", action="append", help="regex on the demangled name (repeatable)")
     ap.add_argument("--out")
+    ap.add_argument("--json", help="write the worst chain of every root and the budget verdict as JSON")
+    ap.add_argument("--label", default="", help="row name for the JSON (e.g. the image name)")
+    ap.add_argument("--budget", type=int, help="bytes the worst chain from --budget-root may use")
+    ap.add_argument("--budget-root", default=STEP_ROOT, help="regex of the budgeted root(s)")
+    ap.add_argument("--reject", action="store_true",
+                    help="rename the ELF to <elf>.rejected when the budget is exceeded")
     args = ap.parse_args()
 
     nodes, edges = load_ci(args.ci_dir)
@@ -187,7 +256,14 @@ def main():
         if key in memo:
             return memo[key]
         if key in visiting:
-            raise SystemExit(f"stack_report: recursion through {key[1]}")
+            if key[0] == "ci":  # Kestrel's own code: SPEC section 1 forbids recursion
+                raise SystemExit(f"stack_report: recursion through {key[1]}")
+            # A C library routine that calls itself (glibc's
+            # __ieee754_remainder rescales a huge divisor and recurses once):
+            # count one more level of its frame and stop there.
+            frame = elf_frames.get(key[1], 0)
+            notes.add(f"recursion in library function {key[1]}: counted as one extra level ({frame} bytes)")
+            return (frame, ((key[1], frame, "recursive call"),))
         visiting.add(key)
         memo[key] = result = worst_uncached(key)
         visiting.discard(key)
@@ -228,8 +304,11 @@ def main():
     all_symbols = {symbol_of(t) for t in nodes} | set(elf_frames)
     names = demangle(all_symbols, args.cxxfilt)
 
-    roots = args.root or DEFAULT_ROOTS
+    roots = list(args.root or DEFAULT_ROOTS)
+    if args.budget is not None and args.budget_root not in roots:
+        roots.insert(0, args.budget_root)
     lines = []
+    results = []  # (pattern, short name, total, chain)
     for pattern in roots:
         rx = re.compile(pattern)
         matches = sorted(s for s in all_symbols if rx.search(names.get(s, s)))
@@ -238,10 +317,26 @@ def main():
             continue
         for sym in matches:
             total, chain = worst(resolve(sym))
+            results.append((pattern, short(names.get(sym, sym)), total, chain))
             lines.append(f"{total:6d} bytes  worst chain from {short(names.get(sym, sym))}")
             for fn, frame, qual in chain:
                 lines.append(f"    {frame:5d}  {short(names.get(fn, fn))}  [{qual}]")
             lines.append("")
+
+    verdict = None
+    budgeted = [r for r in results if r[0] == args.budget_root]
+    worst_budgeted = max((r[2] for r in budgeted), default=None)
+    if args.budget is not None:
+        if worst_budgeted is None:
+            verdict = f"FAIL: no function matches the budgeted root /{args.budget_root}/"
+        elif worst_budgeted > args.budget:
+            verdict = (f"FAIL: the worst chain from /{args.budget_root}/ needs {worst_budgeted} bytes, "
+                       f"over its budget of {args.budget} bytes")
+        else:
+            verdict = (f"OK: the worst chain from /{args.budget_root}/ needs {worst_budgeted} bytes "
+                       f"(budget {args.budget})")
+        lines.append(verdict)
+        lines.append("")
     if notes:
         lines.append("Notes:")
         lines.extend(f"  - {n}" for n in sorted(notes))
@@ -250,7 +345,26 @@ def main():
     if args.out:
         with open(args.out, "w", encoding="utf-8") as f:
             f.write(report)
+    if args.json:
+        doc = {
+            "label": args.label or os.path.basename(args.elf),
+            "step_bytes": worst_budgeted,
+            "budget": args.budget,
+            "max_frame": max(((f, symbol_of(t)) for t, (f, _q) in nodes.items()), default=(0, ""))[0],
+            "roots": [{"root": r[1], "bytes": r[2],
+                       "chain": [{"function": short(names.get(fn, fn)), "frame": fr, "kind": q}
+                                 for fn, fr, q in r[3]]} for r in results],
+        }
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(doc, f, indent=2)
+            f.write("\n")
+    if verdict and verdict.startswith("FAIL"):
+        if args.reject and os.path.exists(args.elf):
+            os.replace(args.elf, args.elf + ".rejected")
+            sys.stderr.write(f"stack_report: {args.elf} renamed to {args.elf}.rejected\n")
+        return 1
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

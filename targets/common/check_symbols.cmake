@@ -1,12 +1,15 @@
-# Post-link symbol check of an image: cmake -DNM=<arm-none-eabi-nm>
+# Post-link symbol check of an image: cmake -DNM=<binutils nm>
 #   -DELF=<image> -P check_symbols.cmake
 # Fails if the symbol table names anything from the heap (malloc family,
 # _sbrk, operator new/delete), stdio output (the printf and puts families,
 # _write) or C++ exception throwing (__cxa_throw, the unwinder, the
 # std::__throw_* helpers), and renames the image to <image>.rejected so the
 # failure repeats on the next build and nobody flashes it. The link-time
-# heap guard (image.cmake) should already have refused all heap symbols;
-# this is the second net and the only one for stdio and exceptions.
+# heap guard (kestrel_heap_guard in evidence.cmake; each board's image.cmake)
+# should already have refused all heap symbols; this is the second net and
+# the only one for stdio and exceptions. Every board runs it on the image
+# that holds the tracker's code path (on riscv64-linux: the heap-guard image,
+# since glibc's start-up in the process image has its own malloc and stdio).
 #
 # It also lists, without failing, the double-precision soft-float helpers
 # and the libm functions in the image: on a single-precision FPU each of
@@ -42,6 +45,8 @@ set(forbidden_exact
   # heap
   malloc free calloc realloc reallocf memalign aligned_alloc posix_memalign valloc pvalloc
   _malloc_r _free_r _calloc_r _realloc_r _reallocf_r _memalign_r _sbrk _sbrk_r
+  __libc_malloc __libc_free __libc_calloc __libc_realloc __libc_memalign reallocarray  # glibc
+  sbrk __sbrk brk __brk
   # stdio output
   printf fprintf sprintf snprintf vprintf vfprintf vsprintf vsnprintf asprintf dprintf
   iprintf fiprintf siprintf sniprintf viprintf vfiprintf vsiprintf vsniprintf

@@ -1,0 +1,45 @@
+// Compile-time configuration of the Cortex-M7 board (STM32H743, e.g. the
+// NUCLEO-H743ZI): clocks, the UART link, buffer sizes, tracker capacities
+// and the step budget. Every number a reader might want to change for
+// another H7 board is here; the drivers only read these constants.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "kestrel/hal/frame_format.hpp"
+
+namespace kestrel::m7 {
+
+/// Core clock (sys_ck) set up by configure_clocks(): HSI 64 MHz / 4 * 50 / 2
+/// through PLL1, at voltage scale 1 (400 MHz is the VOS1 maximum of every
+/// H743 revision; 480 MHz needs VOS0 and revision V).
+inline constexpr std::uint32_t kCoreClockHz = 400'000'000;
+/// AXI/AHB (hclk) = sys_ck / 2; APB1 (USART3's bus and kernel clock) = hclk / 2.
+inline constexpr std::uint32_t kAhbHz = kCoreClockHz / 2;
+inline constexpr std::uint32_t kApb1Hz = kAhbHz / 2;
+
+/// UART link to the sensor front end and the track consumer: 8N1, no flow
+/// control, on USART3 (PD8 TX / PD9 RX: the ST-LINK virtual COM port of the
+/// NUCLEO-H743ZI).
+inline constexpr std::uint32_t kUartBaud = 115'200;
+
+/// Receive ring (USART3 RX interrupt -> main loop). At 115200 baud about
+/// 11.5 bytes arrive per millisecond, so 1 KiB rides out an 88 ms step.
+inline constexpr std::size_t kRxRingBytes = 1024;
+/// Transmit ring (main loop -> USART3 TX interrupt): 18 track reports.
+inline constexpr std::size_t kTxRingBytes = 1024;
+/// Frame assembler's linear buffer: the largest frame the decoder accepts.
+inline constexpr std::size_t kAssemblerBytes = hal::wire::kMaxFrameBytes;
+
+/// Tracker capacities of this board (double EKF-CA radar tracker): the same
+/// as the Cortex-M4F board, so the two images differ only in the scalar.
+inline constexpr std::size_t kMaxTracks = 8;
+inline constexpr std::size_t kMaxPlots = 32;
+
+/// A convert+step longer than this counts as an overrun: 10 ms (as on the
+/// M4F board), 2 % of the 0.5 s frame interval of SPEC section 9's radar
+/// scenarios.
+inline constexpr std::uint64_t kStepBudgetCycles = kCoreClockHz / 100;
+
+}  // namespace kestrel::m7

@@ -1,0 +1,17 @@
+# Cortex-M7 (ARMv7E-M with the double-precision FPv5-D16 FPU), bare metal,
+# hard-float ABI. CPU/ABI only: the board's flags, linker script and heap
+# guard live in targets/cortex-m7/ (image.cmake). The driver picks the
+# thumb/v7e-m+dp/hard multilib of newlib and libstdc++ from these flags.
+set(CMAKE_SYSTEM_NAME Generic)
+set(CMAKE_SYSTEM_PROCESSOR arm)
+
+set(CMAKE_C_COMPILER arm-none-eabi-gcc)
+set(CMAKE_CXX_COMPILER arm-none-eabi-g++)
+set(CMAKE_ASM_COMPILER arm-none-eabi-gcc)
+
+# No startup files or linker script exist at try-compile time.
+set(CMAKE_TRY_COMPILE_TARGET_TYPE STATIC_LIBRARY)
+
+set(CMAKE_C_FLAGS_INIT "-mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard")
+set(CMAKE_CXX_FLAGS_INIT "-mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard")
+set(CMAKE_ASM_FLAGS_INIT "-mcpu=cortex-m7 -mthumb -mfpu=fpv5-d16 -mfloat-abi=hard")
