@@ -9,6 +9,7 @@
 
 #include "cli/cmd_pcl.hpp"
 #include "cli/cmd_r2aekf.hpp"
+#include "cli/cmd_uw.hpp"
 #include "cli/commands.hpp"
 
 namespace {
@@ -92,6 +93,9 @@ int main(int argc, char** argv) {
   kestrel::sim::R2AekfStudyOptions r2aekf;
   CLI::App* r2aekf_cmd = add_r2aekf_command(app, r2aekf);
 
+  UwOptions uw;
+  CLI::App* uw_cmd = add_uw_command(app, uw);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -103,6 +107,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
     if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
     if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);
+    if (app.got_subcommand(uw_cmd)) return cmd_uw(uw);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());
     return 1;
