@@ -17,6 +17,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 
 command -v qemu-riscv64 >/dev/null 2>&1 || { echo "SKIP: qemu-riscv64 not found (Debian: qemu-user)"; exit 77; }
 [ -x "$rv64" ] || { echo "SKIP: $rv64 was not built (no riscv64-linux-gnu-g++?)"; exit 77; }
+for exe in "$sim" "$host_replay"; do
+  [ -x "$exe" ] || { echo "SKIP: $exe was not built (build the host targets kestrel-sim and kestrel-host-replay)"; exit 77; }
+done
 
 rm -rf "$work" && mkdir -p "$work" || fail "cannot create $work"
 "$sim" generate --scenario S1 --seed 7 --out "$work/s1.kstr" >"$work/generate.log" 2>&1 \
