@@ -323,7 +323,12 @@ class ChannelGatedEkf {
     if (llt.info() != Eigen::Success) return fail(Status::kNotPositiveDefinite);
     // K = P H^T S^-1 = (S^-1 H P)^T; removed channels give zero columns.
     const Mat<Scalar, kMeasDim, kStateDim> HP = red.H * P_;
-    const Mat<Scalar, kStateDim, kMeasDim> K = llt.solve(HP).transpose();
+    // One vector solve per column: a matrix right-hand side sends Eigen to
+    // its blocked triangular solver, which references malloc (a board's
+    // link-time heap guard rejects it); vector solves stay on the stack.
+    Mat<Scalar, kMeasDim, kStateDim> SinvHP;
+    for (int c = 0; c < kStateDim; ++c) SinvHP.col(c) = llt.solve(HP.col(c));
+    const Mat<Scalar, kStateDim, kMeasDim> K = SinvHP.transpose();
     const State x = x_ + K * red.nu;
     const Cov A = Cov::Identity() - K * red.H;
     const Cov P = symmetrised(A * P_ * A.transpose() + K * red.R * K.transpose());

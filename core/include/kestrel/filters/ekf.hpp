@@ -111,8 +111,13 @@ class Ekf {
     if (llt.info() != Eigen::Success) return fail(Status::kNotPositiveDefinite);
 
     // K = P H^T S^-1, computed as (S^-1 H P)^T since S and P are symmetric.
+    // One vector solve per column: a matrix right-hand side sends Eigen to
+    // its blocked triangular solver, which may call malloc (the board's heap
+    // guard caught it); vector solves unroll on fixed-size storage.
     const Mat<Scalar, kMeasDim, kStateDim> HP = H * P_;
-    const Mat<Scalar, kStateDim, kMeasDim> K = llt.solve(HP).transpose();
+    Mat<Scalar, kMeasDim, kStateDim> SinvHP;
+    for (int c = 0; c < kStateDim; ++c) SinvHP.col(c) = llt.solve(HP.col(c));
+    const Mat<Scalar, kStateDim, kMeasDim> K = SinvHP.transpose();
     const State x = x_ + K * nu;
     const Cov A = Cov::Identity() - K * H;
     const Cov P = symmetrised(A * P_ * A.transpose() + K * R * K.transpose());

@@ -18,6 +18,16 @@
 #endif
 #endif
 
+// Products of fixed-size matrices up to 4096 rows+cols+depth are evaluated
+// coefficient by coefficient instead of through Eigen's blocked GEMM kernel,
+// whose workspace helper references malloc even for fixed sizes (a board's
+// link-time heap guard rejects it; the channel-gated TOA update with 16
+// channels crosses Eigen's default threshold of 20). kestrel_core also sets
+// it as a compile definition so every translation unit agrees.
+#ifndef EIGEN_GEMM_TO_COEFFBASED_THRESHOLD
+#define EIGEN_GEMM_TO_COEFFBASED_THRESHOLD 4096
+#endif
+
 #include <Eigen/Core>
 #include <Eigen/Cholesky>
 

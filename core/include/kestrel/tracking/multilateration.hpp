@@ -266,7 +266,11 @@ MultilaterationResult<typename Toa::Scalar> multilaterate(const Toa& toa, const 
       }
       run.status = Status::kOk;
       run.position_m = p;
-      run.covariance_m2 = symmetrised(llt.solve(M3::Identity()));
+      // N^-1 column by column (a matrix right-hand side would use Eigen's
+      // blocked solver, which references malloc).
+      M3 N_inv;
+      for (int c = 0; c < 3; ++c) N_inv.col(c) = llt.solve(M3::Identity().col(c));
+      run.covariance_m2 = symmetrised(N_inv);
       run.inliers = inl;
       run.rejected = valid & ~inl;
       const int n_run = channel_count(inl);
