@@ -14,7 +14,15 @@ struct EllipsoidalGate {
   Scalar threshold;  ///< Chi-square quantile, unitless (same units as d2).
 
   static EllipsoidalGate with_probability(GateProbability p) {
-    return EllipsoidalGate{ScalarTraits<Scalar>::from_double(chi_square_quantile<kMeasDim>(p))};
+    // Converted at compile time: a fixed-point image does no double work here.
+    using T = ScalarTraits<Scalar>;
+    constexpr Scalar kThreshold[] = {
+        T::from_double(chi_square_quantile<kMeasDim>(GateProbability::k90)),
+        T::from_double(chi_square_quantile<kMeasDim>(GateProbability::k95)),
+        T::from_double(chi_square_quantile<kMeasDim>(GateProbability::k99)),
+        T::from_double(chi_square_quantile<kMeasDim>(GateProbability::k995)),
+        T::from_double(chi_square_quantile<kMeasDim>(GateProbability::k999))};
+    return EllipsoidalGate{kThreshold[static_cast<int>(p)]};
   }
 
   /// true if the innovation is valid and inside the gate.

@@ -9,7 +9,22 @@
 // returns kNotPositiveDefinite, and in both cases x and P are unchanged.
 // The explicit-Q / explicit-R overloads are what adaptive filters (R2-AEKF)
 // build on, so no adaptive filter copies this update.
+//
+// Two update forms, chosen at compile time (kForm; the default follows the
+// scalar). kBatch is the Cholesky of S above. kSequentialWhitened is the one
+// a fixed-point scalar needs, where S^-1 over- or underflows (its entries
+// span 1e-5 rad^2 to 1e4 m^2): R = L L^T is factored, each row of H and the
+// residual are scaled by L^-1 (unit, independent noise per channel), and
+// the channels are folded in one at a time as scalar updates whose divisor
+// s = h P h^T + 1 is >= 1. Each channel's residual is corrected by the
+// earlier channels' state change, h (x - x_pred), so every channel is
+// linearised at the prediction and the result equals the batch update; the
+// scalar Joseph form P - K PHt^T - PHt K^T + s K K^T keeps P symmetric.
+// The NIS is the sum of the channels' nu_i^2 / s_i; innovation() gets the
+// same value from an LDL^T of the whitened S (divisors >= 1 again).
 #pragma once
+
+#include <cstdint>
 
 #include "kestrel/filters/innovation.hpp"
 #include "kestrel/math/eigen.hpp"
@@ -20,7 +35,20 @@
 
 namespace kestrel {
 
-template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+/// How Ekf folds a measurement in (equal results up to round-off).
+enum class EkfUpdateForm : std::uint8_t {
+  kBatch,               ///< Cholesky of S, K = P H^T S^-1, Joseph form.
+  kSequentialWhitened,  ///< Whitened scalar channel updates, every divisor >= 1.
+};
+
+/// Sequential whitened for fixed point (S^-1 is out of its range), batch for
+/// float and double.
+template <class Scalar>
+inline constexpr EkfUpdateForm kDefaultEkfUpdateForm =
+    ScalarTraits<Scalar>::kIsFixedPoint ? EkfUpdateForm::kSequentialWhitened : EkfUpdateForm::kBatch;
+
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement,
+          EkfUpdateForm kForm = kDefaultEkfUpdateForm<typename Motion::Scalar>>
 class Ekf {
  public:
   using Scalar = typename Motion::Scalar;
@@ -33,6 +61,8 @@ class Ekf {
   using Cov = typename Motion::Cov;
   using MeasVec = typename Measurement::Measurement;
   using MeasCov = typename Measurement::NoiseCov;
+  using Jacobian = Mat<Scalar, kMeasDim, kStateDim>;
+  static constexpr EkfUpdateForm kUpdateForm = kForm;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
 
@@ -85,12 +115,16 @@ class Ekf {
       out.status = Status::kNonFinite;
       return out;
     }
-    const Eigen::LLT<MeasCov> llt(out.S);
-    if (llt.info() != Eigen::Success) {
-      out.status = Status::kNotPositiveDefinite;
-      return out;
+    if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
+      if (!whitened_nis(H, out.nu, R, out.d2)) out.status = Status::kNotPositiveDefinite;
+    } else {
+      const Eigen::LLT<MeasCov> llt(out.S);
+      if (llt.info() != Eigen::Success) {
+        out.status = Status::kNotPositiveDefinite;
+        return out;
+      }
+      out.d2 = out.nu.dot(llt.solve(out.nu));
     }
-    out.d2 = out.nu.dot(llt.solve(out.nu));
     return out;
   }
 
@@ -98,9 +132,19 @@ class Ekf {
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z) { return update(z, measurement_.noise()); }
 
-  /// Update with z and an explicit R (Joseph form, then symmetrised).
+  /// Update with z and an explicit R (Joseph form; see kForm).
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
+    if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
+      return update_sequential(z, R);
+    } else {
+      return update_batch(z, R);
+    }
+  }
+
+ private:
+  /// Batch form: Cholesky of S, Joseph form, then symmetrised.
+  [[nodiscard]] Status update_batch(const MeasVec& z, const MeasCov& R) {
     diag_.fused = false;
     if (!all_finite(z) || !all_finite(R)) return fail(Status::kNonFinite);
     const auto H = measurement_.jacobian(x_);
@@ -133,6 +177,122 @@ class Ekf {
     return Status::kOk;
   }
 
+  /// Sequential whitened form (header comment): scalar channel updates.
+  [[nodiscard]] Status update_sequential(const MeasVec& z, const MeasCov& R) {
+    diag_.fused = false;
+    if (!all_finite(z) || !all_finite(R)) return fail(Status::kNonFinite);
+    const Jacobian H = measurement_.jacobian(x_);
+    const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
+    if (!all_finite(H) || !all_finite(nu)) return fail(Status::kNonFinite);
+    Jacobian Hw = H;
+    MeasVec nuw = nu;
+    if (!whiten(R, Hw, nuw)) return fail(Status::kNotPositiveDefinite);
+
+    State dx = State::Zero();
+    Cov P = P_;
+    Scalar nis(0);
+    for (int i = 0; i < kMeasDim; ++i) {
+      const State h = Hw.row(i).transpose();
+      // Channel i linearised at the prediction, seen from the state the
+      // earlier channels produced: the batch update's residual.
+      const Scalar nu_i = nuw(i) - h.dot(dx);
+      const State PHt = P * h;
+      const Scalar s = h.dot(PHt) + Scalar(1);  // >= 1 up to round-off
+      if (!(s > Scalar(0)) || !ScalarTraits<Scalar>::is_finite(s)) {
+        return fail(Status::kNotPositiveDefinite);
+      }
+      const State K = PHt / s;
+      dx += K * nu_i;
+      nis += nu_i * nu_i / s;
+      // Joseph form of one scalar channel with unit noise:
+      // (I - K h^T) P (I - K h^T)^T + K K^T = P - K PHt^T - PHt K^T + s K K^T,
+      // upper triangle computed and mirrored, so P is exactly symmetric.
+      for (int c = 0; c < kStateDim; ++c) {
+        const Scalar sKc = s * K(c);
+        for (int r = 0; r <= c; ++r) {
+          const Scalar v = P(r, c) - K(r) * PHt(c) - PHt(r) * K(c) + K(r) * sKc;
+          P(r, c) = v;
+          P(c, r) = v;
+        }
+      }
+    }
+    const State x = x_ + dx;
+    if (!all_finite(x) || !all_finite(P) || !ScalarTraits<Scalar>::is_finite(nis)) {
+      return fail(Status::kNonFinite);
+    }
+    MeasVec s_diag;  // diag(H P H^T + R) before the update, for diagnostics
+    for (int i = 0; i < kMeasDim; ++i) {
+      const Eigen::Matrix<Scalar, 1, kStateDim> hP = H.row(i) * P_;
+      s_diag(i) = hP.dot(H.row(i)) + R(i, i);
+    }
+
+    x_ = x;
+    P_ = P;
+    diag_.innovation = nu;
+    diag_.innovation_variance = s_diag;
+    diag_.nis = nis;
+    diag_.fused = true;
+    diag_.status = Status::kOk;
+    return Status::kOk;
+  }
+
+  /// R = L L^T (lower Cholesky, fixed loops), then H <- L^-1 H and
+  /// nu <- L^-1 nu by forward substitution: unit, independent channel noise.
+  /// @return false if R is not positive definite.
+  static bool whiten(const MeasCov& R, Jacobian& H, MeasVec& nu) {
+    MeasCov L = MeasCov::Zero();
+    for (int j = 0; j < kMeasDim; ++j) {
+      Scalar d = R(j, j);
+      for (int k = 0; k < j; ++k) d -= L(j, k) * L(j, k);
+      if (!(d > Scalar(0))) return false;
+      L(j, j) = ScalarTraits<Scalar>::sqrt(d);
+      for (int i = j + 1; i < kMeasDim; ++i) {
+        Scalar v = R(i, j);
+        for (int k = 0; k < j; ++k) v -= L(i, k) * L(j, k);
+        L(i, j) = v / L(j, j);
+      }
+    }
+    for (int i = 0; i < kMeasDim; ++i) {
+      for (int k = 0; k < i; ++k) {
+        H.row(i) -= L(i, k) * H.row(k);
+        nu(i) -= L(i, k) * nu(k);
+      }
+      H.row(i) /= L(i, i);
+      nu(i) /= L(i, i);
+    }
+    return all_finite(H) && all_finite(nu);
+  }
+
+  /// nu^T S^-1 nu, S = H P H^T + R, from the whitened channels: S_w = H_w P
+  /// H_w^T + I = L D L^T (unit lower L, fixed loops, every D_j >= 1 up to
+  /// round-off), then the sum of y_j^2 / D_j with y = L^-1 nu_w.
+  /// @return false if R or S_w is not positive definite.
+  bool whitened_nis(Jacobian Hw, MeasVec nuw, const MeasCov& R, Scalar& d2) const {
+    if (!whiten(R, Hw, nuw)) return false;
+    MeasCov Sw = Hw * P_ * Hw.transpose();
+    for (int j = 0; j < kMeasDim; ++j) Sw(j, j) += Scalar(1);
+    for (int j = 0; j < kMeasDim; ++j) {  // L below the diagonal, D on it
+      Scalar D = Sw(j, j);
+      for (int k = 0; k < j; ++k) D -= Sw(j, k) * Sw(j, k) * Sw(k, k);
+      if (!(D > Scalar(0)) || !ScalarTraits<Scalar>::is_finite(D)) return false;
+      Sw(j, j) = D;
+      for (int i = j + 1; i < kMeasDim; ++i) {
+        Scalar v = Sw(i, j);
+        for (int k = 0; k < j; ++k) v -= Sw(i, k) * Sw(j, k) * Sw(k, k);
+        Sw(i, j) = v / D;
+      }
+    }
+    Scalar sum(0);
+    for (int i = 0; i < kMeasDim; ++i) {
+      for (int k = 0; k < i; ++k) nuw(i) -= Sw(i, k) * nuw(k);
+      sum += nuw(i) * nuw(i) / Sw(i, i);
+    }
+    if (!ScalarTraits<Scalar>::is_finite(sum)) return false;
+    d2 = sum;
+    return true;
+  }
+
+ public:
   const State& x() const { return x_; }
   const Cov& P() const { return P_; }
   const Motion& motion() const { return motion_; }

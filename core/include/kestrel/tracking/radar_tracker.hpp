@@ -44,9 +44,33 @@ using RadarTracker =
     Tracker<Filter, TwoPointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
             kMaxTracks, kMaxPlots>;
 
-/// Tracker-level configuration from the parameters.
+/// The real-valued parameters in the tracker's scalar. For a fixed-point
+/// board, build them in a constant expression,
+///   constexpr auto kScalars = radar_tracker_scalars<Q31_32>(RadarTrackerParams{});
+/// so the image converts nothing from double at run time.
 template <class Scalar>
-TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
+struct RadarTrackerScalars {
+  Scalar sigma_range_m;             ///< sr, m.
+  Scalar sigma_bearing_rad;         ///< sb, rad.
+  Scalar qj;                        ///< White-jerk PSD, m^2/s^5.
+  Scalar max_speed_mps;             ///< Two-point speed limit, m/s.
+  Scalar init_accel_sigma_mps2;     ///< Initial acceleration sigma, m/s^2.
+  Scalar max_range_m;               ///< Largest valid range, m.
+  Scalar max_position_variance_m2;  ///< Deletion limit on var(x) + var(y), m^2.
+};
+
+template <class Scalar>
+constexpr RadarTrackerScalars<Scalar> radar_tracker_scalars(const RadarTrackerParams& p) {
+  using T = ScalarTraits<Scalar>;
+  return RadarTrackerScalars<Scalar>{T::from_double(p.sigma_range_m), T::from_double(p.sigma_bearing_rad),
+                                     T::from_double(p.qj), T::from_double(p.max_speed_mps),
+                                     T::from_double(p.init_accel_sigma_mps2), T::from_double(p.max_range_m),
+                                     T::from_double(p.max_position_variance_m2)};
+}
+
+/// Tracker-level configuration: the integer fields of p, the real ones from s.
+template <class Scalar>
+TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const RadarTrackerScalars<Scalar>& s) {
   using T = ScalarTraits<Scalar>;
   TrackerConfig<Scalar, 2> c;
   c.gate_confirmed = p.gate;
@@ -54,25 +78,40 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
   c.confirm_m = p.confirm_m;
   c.confirm_n = p.confirm_n;
   c.max_coast_misses = p.max_coast_misses;
-  c.max_position_variance_m2 = T::from_double(p.max_position_variance_m2);
+  c.max_position_variance_m2 = s.max_position_variance_m2;
   c.z_min << Scalar(0), -T::pi();
-  c.z_max << T::from_double(p.max_range_m), T::pi();
+  c.z_max << s.max_range_m, T::pi();
   return c;
 }
 
-/// The EKF-CA radar tracker with the given parameters.
+/// Tracker-level configuration from the parameters.
+template <class Scalar>
+TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
+  return radar_tracker_config<Scalar>(p, radar_tracker_scalars<Scalar>(p));
+}
+
+/// The EKF-CA radar tracker: the integer fields of p, the real ones from s
+/// (no double arithmetic: the form a fixed-point board uses).
+template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
+RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p,
+                                                                      const RadarTrackerScalars<Scalar>& s) {
+  CaMotion<Scalar> motion;
+  motion.qj = s.qj;
+  CaPolarRadar<Scalar> radar;
+  radar.sigma_range_m = s.sigma_range_m;
+  radar.sigma_bearing_rad = s.sigma_bearing_rad;
+  TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{radar, s.max_speed_mps,
+                                                                 s.init_accel_sigma_mps2};
+  return RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots>(EkfCa<Scalar>(motion, radar), init,
+                                                            radar_tracker_config<Scalar>(p, s));
+}
+
+/// The EKF-CA radar tracker with the given parameters (converted at run
+/// time: exact and host-independent for fixed point too, but a board
+/// should pass constexpr RadarTrackerScalars instead).
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
 RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p) {
-  using T = ScalarTraits<Scalar>;
-  CaMotion<Scalar> motion;
-  motion.qj = T::from_double(p.qj);
-  CaPolarRadar<Scalar> radar;
-  radar.sigma_range_m = T::from_double(p.sigma_range_m);
-  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
-  TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
-      radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
-  return RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots>(EkfCa<Scalar>(motion, radar), init,
-                                                            radar_tracker_config<Scalar>(p));
+  return make_radar_tracker<Scalar, kMaxTracks, kMaxPlots>(p, radar_tracker_scalars<Scalar>(p));
 }
 
 }  // namespace kestrel

@@ -44,12 +44,18 @@ struct PolarRadar {
     const Scalar px = x(Motion::Layout::kX);
     const Scalar py = x(Motion::Layout::kY);
     const Scalar r = T::hypot(px, py);
-    const Scalar r2 = r * r;
     Jacobian H = Jacobian::Zero();
     H(kRange, Motion::Layout::kX) = px / r;
     H(kRange, Motion::Layout::kY) = py / r;
-    H(kBearing, Motion::Layout::kX) = -py / r2;
-    H(kBearing, Motion::Layout::kY) = px / r2;
+    if constexpr (T::kIsFixedPoint) {
+      // r^2 would leave Q23.40's range beyond 2.9 km: divide by r twice.
+      H(kBearing, Motion::Layout::kX) = -H(kRange, Motion::Layout::kY) / r;
+      H(kBearing, Motion::Layout::kY) = H(kRange, Motion::Layout::kX) / r;
+    } else {
+      const Scalar r2 = r * r;
+      H(kBearing, Motion::Layout::kX) = -py / r2;
+      H(kBearing, Motion::Layout::kY) = px / r2;
+    }
     return H;
   }
 

@@ -1,0 +1,376 @@
+// The project's fixed-point scalar (SPEC section 2): a signed Q-format number
+// on int64 storage, templated on the fraction bits (Q31.32 by default, Q23.40
+// as the fine-grained option), for FPU-less cores. Every operation is integer
+// only and gives one correctly rounded result (round to nearest, ties to
+// even): + and - are exact; * forms the exact 64x64 -> 128-bit product from
+// four 32x32 -> 64-bit pieces (no __int128, which 32-bit targets lack) and
+// rounds once; / divides the exact 128-bit dividend by shift-subtract with a
+// fixed 64-step loop and rounds once. The same source therefore produces the
+// same bits on x86-64, i386 and a Cortex-M0+, which is what makes a host
+// replay a proof of what the board computed (docs/fixed-point.md).
+//
+// Out-of-range results saturate to +-(2^63 - 1) raw, which the type treats as
+// non-finite (the role Inf/NaN play for float): ScalarTraits::is_finite() is
+// false for them, a filter refuses a step that produced one, and they stick
+// through further arithmetic. Each fresh saturation (overflow, division by
+// zero, sqrt of a negative) increments a counter tests read with
+// fixed_point_overflow_count(). In a constant expression an overflow is a
+// compile error instead.
+//
+// Construction: implicit from integers (exact, saturating), explicit and
+// consteval from double (so a double literal becomes a constant at compile
+// time and never costs soft-float at run time), from_double() for host code
+// and from_ratio(num, den) for integer sensor units at the HAL boundary.
+// Math functions (sqrt, hypot, atan2, sin, cos) and ScalarTraits live in
+// fixed_point_math.hpp; the Eigen glue in fixed_point_eigen.hpp.
+#pragma once
+
+#include <bit>
+#include <concepts>
+#include <cstdint>
+#include <type_traits>
+#include <utility>
+
+namespace kestrel {
+namespace fixed {
+
+namespace detail {
+
+inline constexpr std::int64_t kPosOverflow = INT64_MAX;   ///< Raw value of +saturation.
+inline constexpr std::int64_t kNegOverflow = -INT64_MAX;  ///< Raw value of -saturation.
+inline constexpr std::int64_t kMaxFinite = INT64_MAX - 1; ///< Largest finite raw magnitude.
+
+// One counter per thread on a hosted OS (host_sim may run filters in
+// parallel); a plain global on bare metal, where there is one thread and
+// thread_local would need TLS support.
+#if defined(__unix__) || defined(__APPLE__) || defined(_WIN32)
+inline thread_local std::uint32_t overflow_events = 0;
+#else
+inline std::uint32_t overflow_events = 0;
+#endif
+
+/// Count a saturation. During constant evaluation the division by zero
+/// makes the expression ill-formed instead: an overflowing constant fails
+/// to compile ("division by zero is not a constant expression").
+constexpr void note_overflow() {
+  if (std::is_constant_evaluated()) {
+    int fixed_point_overflow_in_constant_expression = 0;
+    fixed_point_overflow_in_constant_expression = 1 / fixed_point_overflow_in_constant_expression;
+  } else {
+    ++overflow_events;
+  }
+}
+
+/// An unsigned 128-bit integer as two 64-bit words.
+struct U128 {
+  std::uint64_t hi;
+  std::uint64_t lo;
+};
+
+constexpr std::uint64_t lo32(std::uint64_t v) { return v & 0xFFFFFFFFu; }
+
+/// Exact 64 x 64 -> 128-bit product from four 32 x 32 -> 64-bit products.
+constexpr U128 mul_wide(std::uint64_t a, std::uint64_t b) {
+  const std::uint64_t a0 = lo32(a);
+  const std::uint64_t a1 = a >> 32;
+  const std::uint64_t b0 = lo32(b);
+  const std::uint64_t b1 = b >> 32;
+  const std::uint64_t p00 = a0 * b0;
+  const std::uint64_t p01 = a0 * b1;
+  const std::uint64_t p10 = a1 * b0;
+  const std::uint64_t p11 = a1 * b1;
+  const std::uint64_t mid = (p00 >> 32) + lo32(p01) + lo32(p10);  // < 3 * 2^32: no carry out
+  return U128{p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32), (mid << 32) | lo32(p00)};
+}
+
+constexpr U128 add(U128 a, U128 b) {
+  const std::uint64_t lo = a.lo + b.lo;
+  return U128{a.hi + b.hi + (lo < a.lo ? 1u : 0u), lo};
+}
+
+constexpr U128 sub(U128 a, U128 b) {
+  return U128{a.hi - b.hi - (a.lo < b.lo ? 1u : 0u), a.lo - b.lo};
+}
+
+constexpr bool less(U128 a, U128 b) { return a.hi < b.hi || (a.hi == b.hi && a.lo < b.lo); }
+
+/// a << s for 0 <= s < 128.
+constexpr U128 shl(U128 a, int s) {
+  if (s == 0) return a;
+  if (s >= 64) return U128{a.lo << (s - 64), 0};
+  return U128{(a.hi << s) | (a.lo >> (64 - s)), a.lo << s};
+}
+
+/// a >> s for 0 <= s < 128.
+constexpr U128 shr(U128 a, int s) {
+  if (s == 0) return a;
+  if (s >= 64) return U128{0, a.hi >> (s - 64)};
+  return U128{a.hi >> s, (a.lo >> s) | (a.hi << (64 - s))};
+}
+
+/// round(v / 2^s), ties to even, for 0 <= s < 64.
+constexpr U128 round_shift(U128 v, int s) {
+  if (s == 0) return v;
+  U128 q = shr(v, s);
+  const std::uint64_t mask = (std::uint64_t{1} << s) - 1u;
+  const std::uint64_t rem = v.lo & mask;
+  const std::uint64_t half = std::uint64_t{1} << (s - 1);
+  if (rem > half || (rem == half && (q.lo & 1u) != 0)) q = add(q, U128{0, 1});
+  return q;
+}
+
+/// |v| as uint64 (exact for INT64_MIN too).
+constexpr std::uint64_t magnitude(std::int64_t v) {
+  return v < 0 ? 0u - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
+}
+
+/// sign * mag as a finite raw value, or saturation (counted) when it does not fit.
+constexpr std::int64_t to_raw_saturating(U128 mag, bool negative) {
+  if (mag.hi != 0 || mag.lo > static_cast<std::uint64_t>(kMaxFinite)) {
+    note_overflow();
+    return negative ? kNegOverflow : kPosOverflow;
+  }
+  const auto m = static_cast<std::int64_t>(mag.lo);
+  return negative ? -m : m;
+}
+
+/// Quotient and remainder of a 128 / 64-bit unsigned division.
+struct DivResult {
+  std::uint64_t q;
+  std::uint64_t r;
+};
+
+/// floor(n / d) and n mod d for d != 0 and n.hi < d (so the quotient fits in
+/// 64 bits): restoring shift-subtract, exactly 64 iterations whatever the
+/// operands (constant time, no hardware divider needed).
+constexpr DivResult udiv(U128 n, std::uint64_t d) {
+  std::uint64_t r = n.hi;
+  std::uint64_t lo = n.lo;
+  std::uint64_t q = 0;
+  for (int i = 0; i < 64; ++i) {
+    const bool carry = (r >> 63) != 0;  // the shifted remainder has 65 bits
+    r = (r << 1) | (lo >> 63);
+    lo <<= 1;
+    q <<= 1;
+    if (carry || r >= d) {
+      r -= d;  // modulo 2^64: exact, since the true remainder is < d
+      q |= 1u;
+    }
+  }
+  return DivResult{q, r};
+}
+
+/// round(n / d), ties to even, for d != 0; {1, 0} (>= 2^64) when the
+/// quotient does not fit in 64 bits.
+constexpr U128 udiv_round(U128 n, std::uint64_t d) {
+  if (n.hi >= d) return U128{1, 0};
+  DivResult qr = udiv(n, d);
+  const bool r_top = (qr.r >> 63) != 0;
+  const std::uint64_t r2 = qr.r << 1;
+  const bool up = r_top || r2 > d || (r2 == d && (qr.q & 1u) != 0);
+  if (up) {
+    ++qr.q;
+    if (qr.q == 0) return U128{1, 0};
+  }
+  return U128{0, qr.q};
+}
+
+/// round(sqrt(n)) of an unsigned 128-bit integer, digit by digit (two bits
+/// of n per step, exactly 64 steps). Never a tie: n is an integer.
+constexpr std::uint64_t isqrt_round(U128 n) {
+  U128 rem{0, 0};
+  std::uint64_t root = 0;
+  for (int i = 0; i < 64; ++i) {
+    const std::uint64_t two_bits =
+        i < 32 ? (n.hi >> (62 - 2 * i)) & 3u : (n.lo >> (62 - 2 * (i - 32))) & 3u;
+    rem = shl(rem, 2);
+    rem.lo |= two_bits;
+    const U128 trial = add(shl(U128{0, root}, 2), U128{0, 1});  // 4 root + 1
+    root <<= 1;
+    if (!less(rem, trial)) {
+      rem = sub(rem, trial);
+      root |= 1u;
+    }
+  }
+  // n = root^2 + rem; round(sqrt(n)) = root + 1 iff n > root^2 + root.
+  if (less(U128{0, root}, rem)) ++root;
+  return root;
+}
+
+/// round(sign(v) * |m| * 2^e) for a double's integer mantissa m and exponent e,
+/// with saturation; exact integer work so it is bit-identical everywhere.
+constexpr std::int64_t scale_mantissa(std::uint64_t mant, int e, bool negative) {
+  if (mant == 0) return 0;
+  if (e >= 0) {
+    if (e >= 64) return to_raw_saturating(U128{1, 0}, negative);
+    return to_raw_saturating(shl(U128{0, mant}, e), negative);
+  }
+  if (-e >= 64) return 0;  // |value| < 2^53 * 2^-64 < 0.5
+  return to_raw_saturating(round_shift(U128{0, mant}, -e), negative);
+}
+
+}  // namespace detail
+
+/// A signed fixed-point number with kFracBits fraction bits on int64
+/// storage: value = raw / 2^kFracBits, range +-2^(63 - kFracBits).
+template <int kFracBits>
+class FixedPoint {
+  static_assert(kFracBits >= 1 && kFracBits <= 60,
+                "1..60 fraction bits (the math functions work at 2^-60 internally)");
+
+ public:
+  using Raw = std::int64_t;
+  static constexpr int kFractionBits = kFracBits;
+  static constexpr int kIntegerBits = 63 - kFracBits;  ///< Excluding the sign bit.
+  static constexpr Raw kOne = Raw{1} << kFracBits;     ///< Raw value of 1.
+
+  constexpr FixedPoint() = default;
+
+  /// Exact from an integer (saturating and counted if out of range). Implicit,
+  /// as Eigen and generic code write Scalar(0), Scalar(1), x / Scalar(2).
+  template <std::integral I>
+    requires(!std::same_as<I, bool>)
+  constexpr FixedPoint(I v) : raw_(from_integer(v)) {}  // NOLINT(google-explicit-constructor)
+
+  /// From a double literal, at compile time only: a fixed-point image never
+  /// converts a double at run time. Round to nearest, ties to even.
+  explicit consteval FixedPoint(double v) : raw_(from_double(v).raw_) {}
+
+  static constexpr FixedPoint from_raw(Raw raw) {
+    FixedPoint q;
+    q.raw_ = raw;
+    return q;
+  }
+
+  /// Round to nearest (ties to even) from a double, by integer work on its
+  /// bits, so the result is the same on every host. NaN and out-of-range
+  /// values saturate (counted). Host code and constant expressions only: on
+  /// a board, use integer units and from_ratio().
+  static constexpr FixedPoint from_double(double v) {
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    const bool negative = (bits >> 63) != 0;
+    const int biased = static_cast<int>((bits >> 52) & 0x7FFu);
+    std::uint64_t mant = bits & ((std::uint64_t{1} << 52) - 1u);
+    if (biased == 0x7FF) {  // Inf or NaN
+      detail::note_overflow();
+      return from_raw(negative && mant == 0 ? detail::kNegOverflow : detail::kPosOverflow);
+    }
+    int e = -1074;  // subnormal
+    if (biased != 0) {
+      mant |= std::uint64_t{1} << 52;
+      e = biased - 1075;
+    }
+    return from_raw(detail::scale_mantissa(mant, e + kFracBits, negative));
+  }
+
+  /// round(num / den), ties to even, for integer sensor units (e.g. range in
+  /// mm: den = 1000). Exact integer division; den == 0 saturates (counted).
+  static constexpr FixedPoint from_ratio(std::int64_t num, std::int64_t den) {
+    if (den == 0) {
+      detail::note_overflow();
+      return from_raw(num < 0 ? detail::kNegOverflow : detail::kPosOverflow);
+    }
+    const bool negative = (num < 0) != (den < 0);
+    const detail::U128 n = detail::shl(detail::U128{0, detail::magnitude(num)}, kFracBits);
+    return from_raw(detail::to_raw_saturating(detail::udiv_round(n, detail::magnitude(den)), negative));
+  }
+
+  constexpr Raw raw() const { return raw_; }
+
+  /// false for a saturated value (and for INT64_MIN, which no operation makes).
+  constexpr bool is_finite() const { return raw_ > detail::kNegOverflow && raw_ < detail::kPosOverflow; }
+
+  /// Host-side conversion (tests, logs, host_sim); a board never needs it.
+  explicit constexpr operator double() const {
+    return static_cast<double>(raw_) / static_cast<double>(kOne);
+  }
+  explicit constexpr operator float() const { return static_cast<float>(static_cast<double>(*this)); }
+
+  // ---- arithmetic: one correctly rounded result per operation --------------
+
+  friend constexpr FixedPoint operator+(FixedPoint a, FixedPoint b) {
+    if (!a.is_finite() || !b.is_finite()) return propagate_add(a, b);
+    const auto s = static_cast<Raw>(static_cast<std::uint64_t>(a.raw_) + static_cast<std::uint64_t>(b.raw_));
+    const bool wrapped = ((a.raw_ >= 0) == (b.raw_ >= 0)) && ((s >= 0) != (a.raw_ >= 0));
+    if (wrapped || s > detail::kMaxFinite || s < -detail::kMaxFinite) {
+      detail::note_overflow();
+      return from_raw(a.raw_ >= 0 ? detail::kPosOverflow : detail::kNegOverflow);
+    }
+    return from_raw(s);
+  }
+
+  friend constexpr FixedPoint operator-(FixedPoint a) {
+    return from_raw(a.raw_ == INT64_MIN ? detail::kPosOverflow : -a.raw_);
+  }
+
+  friend constexpr FixedPoint operator-(FixedPoint a, FixedPoint b) { return a + (-b); }
+
+  friend constexpr FixedPoint operator*(FixedPoint a, FixedPoint b) {
+    const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
+    if (!a.is_finite() || !b.is_finite()) {
+      return from_raw(negative ? detail::kNegOverflow : detail::kPosOverflow);
+    }
+    const detail::U128 p = detail::mul_wide(detail::magnitude(a.raw_), detail::magnitude(b.raw_));
+    return from_raw(detail::to_raw_saturating(detail::round_shift(p, kFracBits), negative));
+  }
+
+  friend constexpr FixedPoint operator/(FixedPoint a, FixedPoint b) {
+    const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
+    if (!a.is_finite()) return from_raw(negative ? detail::kNegOverflow : detail::kPosOverflow);
+    if (!b.is_finite()) return FixedPoint{};  // finite / "infinite" -> 0
+    if (b.raw_ == 0) {
+      detail::note_overflow();
+      return from_raw(a.raw_ < 0 ? detail::kNegOverflow : detail::kPosOverflow);
+    }
+    const detail::U128 n = detail::shl(detail::U128{0, detail::magnitude(a.raw_)}, kFracBits);
+    return from_raw(detail::to_raw_saturating(detail::udiv_round(n, detail::magnitude(b.raw_)), negative));
+  }
+
+  constexpr FixedPoint& operator+=(FixedPoint b) { return *this = *this + b; }
+  constexpr FixedPoint& operator-=(FixedPoint b) { return *this = *this - b; }
+  constexpr FixedPoint& operator*=(FixedPoint b) { return *this = *this * b; }
+  constexpr FixedPoint& operator/=(FixedPoint b) { return *this = *this / b; }
+  constexpr FixedPoint operator+() const { return *this; }
+
+  friend constexpr bool operator==(FixedPoint a, FixedPoint b) { return a.raw_ == b.raw_; }
+  friend constexpr auto operator<=>(FixedPoint a, FixedPoint b) { return a.raw_ <=> b.raw_; }
+
+ private:
+  template <std::integral I>
+  static constexpr Raw from_integer(I v) {
+    constexpr Raw kMaxInt = detail::kMaxFinite >> kFracBits;
+    if (std::cmp_greater(v, kMaxInt) || std::cmp_less(v, -kMaxInt)) {
+      detail::note_overflow();
+      return std::cmp_less(v, 0) ? detail::kNegOverflow : detail::kPosOverflow;
+    }
+    return static_cast<Raw>(v) * kOne;
+  }
+
+  /// Sum where an operand is saturated: saturation sticks (opposite signs,
+  /// the fixed-point "NaN", give +saturation). Not counted again.
+  static constexpr FixedPoint propagate_add(FixedPoint a, FixedPoint b) {
+    if (!a.is_finite() && !b.is_finite() && (a.raw_ < 0) != (b.raw_ < 0)) {
+      return from_raw(detail::kPosOverflow);
+    }
+    const Raw r = a.is_finite() ? b.raw_ : a.raw_;
+    return from_raw(r < 0 ? detail::kNegOverflow : detail::kPosOverflow);
+  }
+
+  Raw raw_ = 0;
+};
+
+}  // namespace fixed
+
+using fixed::FixedPoint;
+/// 31 integer bits, 32 fraction bits: +-2.1e9, resolution 2.3e-10. The default.
+using Q31_32 = FixedPoint<32>;
+/// 23 integer bits, 40 fraction bits: +-8.4e6, resolution 9.1e-13.
+using Q23_40 = FixedPoint<40>;
+
+/// Saturation events (overflow, division by zero, sqrt of a negative, a
+/// non-finite double) of fixed-point arithmetic on this thread since the last
+/// reset_fixed_point_overflow_count(). Tests assert it stays 0.
+inline std::uint32_t fixed_point_overflow_count() { return fixed::detail::overflow_events; }
+inline void reset_fixed_point_overflow_count() { fixed::detail::overflow_events = 0; }
+
+}  // namespace kestrel
