@@ -1,0 +1,30 @@
+// The Cortex-M0+ firmware's main (firmware_main, called by Reset_Handler in
+// startup.cpp): clocks to 125 MHz, SysTick cycle clock and UART0, then the
+// hal Runner forever (SPEC section 8). All large objects are statics, as on
+// the other boards; g_runner.stats() holds the same RunnerStats.
+#include "board.hpp"
+
+namespace {
+
+using namespace kestrel::m0plus;
+
+Tracker g_tracker = kestrel::make_radar_tracker<float, kMaxTracks, kMaxPlots>(kestrel::RadarTrackerParams{});
+Feed g_feed{uart0_rx_ring()};
+Clock g_clock{};
+Sink g_sink{uart0_tx_ring()};
+Runner g_runner{g_feed, g_clock, g_tracker, Adapter{}, g_sink, kStepBudgetCycles};
+
+}  // namespace
+
+namespace kestrel::m0plus {
+
+[[noreturn]] void firmware_main() {
+  configure_clocks();
+  g_clock.start();
+  uart0_start();
+  for (;;) {
+    (void)g_runner.poll_once();
+  }
+}
+
+}  // namespace kestrel::m0plus

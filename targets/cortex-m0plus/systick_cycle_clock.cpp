@@ -1,0 +1,46 @@
+// SysTick cycle clock (see systick_cycle_clock.hpp) and its interrupt.
+#include "systick_cycle_clock.hpp"
+
+#include <atomic>
+
+#include "registers.hpp"
+
+namespace kestrel::m0plus {
+namespace {
+
+constexpr std::uint32_t kReload = 0x00FFFFFFu;  // 2^24 - 1: the full 24-bit range
+
+// Written by SysTick_Handler only (a plain load and store: ARMv6-M has no
+// exclusive access, and a single writer needs none).
+constinit std::atomic<std::uint32_t> g_wraps{0};
+
+}  // namespace
+
+void SysTickCycleClock::start() {
+  using namespace regs;
+  reg(kSysTickCsr) = 0;
+  reg(kSysTickRvr) = kReload;
+  reg(kSysTickCvr) = 0;  // any write clears the counter and COUNTFLAG
+  g_wraps.store(0, std::memory_order_relaxed);
+  reg(kSysTickCsr) = kSysTickEnable | kSysTickTickInt | kSysTickClkSourceCpu;
+}
+
+std::uint64_t SysTickCycleClock::now_cycles() {
+  using namespace regs;
+  for (;;) {
+    const std::uint32_t before = g_wraps.load(std::memory_order_acquire);
+    const std::uint32_t down = reg(kSysTickCvr);
+    const bool pending = (reg(kScbIcsr) & kIcsrPendStSet) != 0;
+    const std::uint32_t after = g_wraps.load(std::memory_order_acquire);
+    if (before == after && !pending) {
+      return (static_cast<std::uint64_t>(before) << 24) | (kReload - down);
+    }
+  }
+}
+
+}  // namespace kestrel::m0plus
+
+extern "C" void SysTick_Handler() {
+  using kestrel::m0plus::g_wraps;
+  g_wraps.store(g_wraps.load(std::memory_order_relaxed) + 1u, std::memory_order_release);
+}

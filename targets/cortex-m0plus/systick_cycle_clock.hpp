@@ -1,0 +1,28 @@
+// CycleClock of the Cortex-M0+ board: ARMv6-M has no DWT cycle counter, so
+// the 24-bit SysTick counter runs at the processor clock (reload 2^24 - 1,
+// counting down) and its interrupt (SysTick_Handler, systick_cycle_clock.cpp)
+// counts the wraps, every 2^24 / 125 MHz = 134 ms. now_cycles() combines
+// the two into 64 bits: it reads the wrap count, the counter and the wrap
+// count again and retries when a wrap was counted in between or is pending,
+// so it never goes backwards. Cost: one interrupt of a few cycles per 134 ms.
+#pragma once
+
+#include <cstdint>
+
+#include "board_config.hpp"
+
+namespace kestrel::m0plus {
+
+class SysTickCycleClock {
+ public:
+  /// Start SysTick on the processor clock with its interrupt. Call once,
+  /// after configure_clocks().
+  void start();
+
+  /// Processor cycles since start(), 64 bits.
+  [[nodiscard]] std::uint64_t now_cycles();
+
+  [[nodiscard]] std::uint64_t cycles_per_second() const { return kCoreClockHz; }
+};
+
+}  // namespace kestrel::m0plus
