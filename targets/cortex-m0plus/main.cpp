@@ -8,7 +8,11 @@ namespace {
 
 using namespace kestrel::m0plus;
 
-Tracker g_tracker = kestrel::make_radar_tracker<float, kMaxTracks, kMaxPlots>(kestrel::RadarTrackerParams{});
+// The real-valued parameters become Q31.32 constants at compile time: the
+// image converts nothing from double at run time.
+constexpr kestrel::RadarTrackerParams kParams{};
+constexpr kestrel::RadarTrackerScalars<Scalar> kScalars = kestrel::radar_tracker_scalars<Scalar>(kParams);
+Tracker g_tracker = kestrel::make_radar_tracker<Scalar, kMaxTracks, kMaxPlots>(kParams, kScalars);
 Feed g_feed{uart0_rx_ring()};
 Clock g_clock{};
 Sink g_sink{uart0_tx_ring()};

@@ -5,7 +5,6 @@
 // compiler can, -m32 (golden_hash/CMakeLists.txt): the fixed-point result
 // must not depend on the optimiser or the word size.
 // Exit status 0 when both hashes match.
-#include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
 
@@ -21,8 +20,11 @@ int main() {
   const std::uint64_t q23 = kestrel::test::s1_golden_hash<40>();
   const bool ok31 = q31 == kestrel::test::kS1GoldenHashQ31_32;
   const bool ok23 = q23 == kestrel::test::kS1GoldenHashQ23_40;
-  std::printf("Q31.32 0x%016" PRIx64 " %s\n", q31, ok31 ? "ok" : "MISMATCH");
-  std::printf("Q23.40 0x%016" PRIx64 " %s\n", q23, ok23 ? "ok" : "MISMATCH");
+  // Two 32-bit halves: newlib's printf has no PRIx64 on every target.
+  std::printf("Q31.32 0x%08lx%08lx %s\n", static_cast<unsigned long>(q31 >> 32),
+              static_cast<unsigned long>(q31 & 0xFFFFFFFFu), ok31 ? "ok" : "MISMATCH");
+  std::printf("Q23.40 0x%08lx%08lx %s\n", static_cast<unsigned long>(q23 >> 32),
+              static_cast<unsigned long>(q23 & 0xFFFFFFFFu), ok23 ? "ok" : "MISMATCH");
   std::printf("sizeof(void*) = %u, overflow events = %u\n", static_cast<unsigned>(sizeof(void*)),
               static_cast<unsigned>(kestrel::fixed_point_overflow_count()));
   return ok31 && ok23 && kestrel::fixed_point_overflow_count() == 0 ? 0 : 1;

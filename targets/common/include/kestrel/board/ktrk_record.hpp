@@ -35,7 +35,9 @@
 // NaN is written as the field's minimum (INT32_MIN, or the unsigned maximum
 // for unsigned fields). Written by the Cortex-M4F engineer for that board
 // (targets/cortex-m4f/uart_sink.hpp) and moved here unchanged so every board
-// shares one encoder.
+// shares one encoder. A fixed-point tracker (issue 8) is encoded with integer
+// arithmetic only, rounding half away from zero as the float path does; a
+// saturated value is written as the field's end of its sign.
 #pragma once
 
 #include <cmath>
@@ -46,6 +48,8 @@
 
 #include "kestrel/hal/crc32.hpp"
 #include "kestrel/hal/frame_format.hpp"
+#include "kestrel/scalar/fixed_point_math.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/tracking/track.hpp"
 
 namespace kestrel::board {
@@ -79,6 +83,21 @@ U to_unsigned(float v, float scale) {
   return static_cast<U>(s + 0.5f);
 }
 
+/// round(v * scale) of a fixed-point value, half away from zero, saturated to
+/// [lo, hi]: exact 128-bit product, integer arithmetic only (a fixed-point
+/// image links no float).
+template <class Q>
+std::int64_t fixed_to_int(Q v, std::uint32_t scale, std::int64_t lo, std::int64_t hi) {
+  namespace fd = fixed::detail;
+  if (!v.is_finite()) return v.raw() < 0 ? lo : hi;
+  const bool negative = v.raw() < 0;
+  const fd::U128 half{0, std::uint64_t{1} << (Q::kFractionBits - 1)};
+  const fd::U128 q = fd::shr(fd::add(fd::mul_wide(fd::magnitude(v.raw()), scale), half), Q::kFractionBits);
+  if (q.hi != 0 || q.lo > static_cast<std::uint64_t>(INT64_MAX)) return negative ? lo : hi;
+  const std::int64_t r = negative ? -static_cast<std::int64_t>(q.lo) : static_cast<std::int64_t>(q.lo);
+  return r < lo ? lo : (r > hi ? hi : r);
+}
+
 }  // namespace detail
 
 /// Encode `r` as a KTRK v1 record into `out`.
@@ -86,9 +105,9 @@ template <class Filter>
 void encode_track_record(const TrackReport<Filter>& r, std::span<std::uint8_t, report_record::kSize> out) {
   using Scalar = typename Filter::Scalar;
   using L = typename Filter::Layout;
-  static_assert(std::is_floating_point_v<Scalar>, "the KTRK encoder takes a floating-point tracker");
+  static_assert(std::is_floating_point_v<Scalar> || ScalarTraits<Scalar>::kIsFixedPoint,
+                "the KTRK encoder takes a floating-point or fixed-point tracker");
   namespace w = hal::wire;
-  const auto f = [](Scalar v) { return static_cast<float>(v); };
 
   w::store_u32(out, 0, report_record::kMagic);
   w::store_u8(out, 4, report_record::kVersion);
@@ -97,17 +116,31 @@ void encode_track_record(const TrackReport<Filter>& r, std::span<std::uint8_t, r
   w::store_u8(out, 7, 0);
   w::store_u32(out, 8, r.track_id);
   w::store_i64(out, 12, r.t_us);
-  w::store_i32(out, 20, detail::to_i32(f(r.x(L::kX)), 1000.0f));
-  w::store_i32(out, 24, detail::to_i32(f(r.x(L::kY)), 1000.0f));
-  w::store_i32(out, 28, detail::to_i32(f(r.x(L::kVx)), 1000.0f));
-  w::store_i32(out, 32, detail::to_i32(f(r.x(L::kVy)), 1000.0f));
-  const float pos_var = f(r.P(L::kX, L::kX)) + f(r.P(L::kY, L::kY));
-  w::store_u32(out, 36, detail::to_unsigned<std::uint32_t>(std::sqrt(pos_var), 1000.0f));
+  if constexpr (ScalarTraits<Scalar>::kIsFixedPoint) {
+    const auto i32 = [](Scalar v) {
+      return static_cast<std::int32_t>(detail::fixed_to_int(v, 1000, INT32_MIN, INT32_MAX));
+    };
+    w::store_i32(out, 20, i32(r.x(L::kX)));
+    w::store_i32(out, 24, i32(r.x(L::kY)));
+    w::store_i32(out, 28, i32(r.x(L::kVx)));
+    w::store_i32(out, 32, i32(r.x(L::kVy)));
+    const Scalar pos_sigma = ScalarTraits<Scalar>::sqrt(r.P(L::kX, L::kX) + r.P(L::kY, L::kY));
+    w::store_u32(out, 36, static_cast<std::uint32_t>(detail::fixed_to_int(pos_sigma, 1000, 0, UINT32_MAX)));
+    w::store_u16(out, 48, static_cast<std::uint16_t>(detail::fixed_to_int(r.nis, 100, 0, UINT16_MAX)));
+  } else {
+    const auto f = [](Scalar v) { return static_cast<float>(v); };
+    w::store_i32(out, 20, detail::to_i32(f(r.x(L::kX)), 1000.0f));
+    w::store_i32(out, 24, detail::to_i32(f(r.x(L::kY)), 1000.0f));
+    w::store_i32(out, 28, detail::to_i32(f(r.x(L::kVx)), 1000.0f));
+    w::store_i32(out, 32, detail::to_i32(f(r.x(L::kVy)), 1000.0f));
+    const float pos_var = f(r.P(L::kX, L::kX)) + f(r.P(L::kY, L::kY));
+    w::store_u32(out, 36, detail::to_unsigned<std::uint32_t>(std::sqrt(pos_var), 1000.0f));
+    w::store_u16(out, 48, detail::to_unsigned<std::uint16_t>(f(r.nis), 100.0f));
+  }
   w::store_u16(out, 40, r.age);
   w::store_u16(out, 42, r.hits);
   w::store_u16(out, 44, r.misses);
   w::store_i16(out, 46, r.measurement_index);
-  w::store_u16(out, 48, detail::to_unsigned<std::uint16_t>(f(r.nis), 100.0f));
   w::store_u16(out, 50, 0);
   const std::uint32_t crc = hal::crc32(std::span<const std::uint8_t>(out.data(), report_record::kCrcOffset));
   w::store_u32(out, report_record::kCrcOffset, crc);
