@@ -269,7 +269,7 @@ MultilaterationResult<typename Toa::Scalar> multilaterate(const Toa& toa, const 
       // N^-1 column by column (a matrix right-hand side would use Eigen's
       // blocked solver, which references malloc).
       M3 N_inv;
-      for (int c = 0; c < 3; ++c) N_inv.col(c) = llt.solve(M3::Identity().col(c));
+      for (int j = 0; j < 3; ++j) N_inv.col(j) = llt.solve(M3::Identity().col(j));
       run.covariance_m2 = symmetrised(N_inv);
       run.inliers = inl;
       run.rejected = valid & ~inl;
