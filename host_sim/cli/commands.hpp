@@ -16,6 +16,7 @@ namespace kestrel::sim::cli {
 /// Options every command that runs a filter shares.
 struct FilterChoice {
   std::string filter = "ekf-ca";
+  std::string scalar;              ///< --scalar (cli/cmd_scalars.hpp); empty: as `filter` names it.
   FilterOptions options;           ///< --qj, --gate-d2 overrides.
   double budget_us = 1000.0;       ///< Step overrun threshold, us.
 };

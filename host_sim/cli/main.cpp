@@ -9,6 +9,7 @@
 
 #include "cli/cmd_pcl.hpp"
 #include "cli/cmd_r2aekf.hpp"
+#include "cli/cmd_scalars.hpp"
 #include "cli/cmd_uw.hpp"
 #include "cli/commands.hpp"
 
@@ -24,6 +25,7 @@ void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
 
 void add_filter_options(CLI::App* cmd, FilterChoice& f) {
   cmd->add_option("--filter,-f", f.filter, "Filter (see `list`)")->capture_default_str();
+  add_scalar_option(cmd, f.scalar);
   add_model_options(cmd, f.options);
   cmd->add_option("--budget-us", f.budget_us, "Step budget for overrun counting, us")->capture_default_str();
 }
@@ -96,9 +98,16 @@ int main(int argc, char** argv) {
   UwOptions uw;
   CLI::App* uw_cmd = add_uw_command(app, uw);
 
+  ScalarsOptions scalars;
+  CLI::App* scalars_cmd = add_scalars_command(app, scalars);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
+    // --scalar picks the filter's build on that scalar (cli/cmd_scalars.hpp).
+    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) {
+      f->filter = filter_for_scalar(f->filter, f->scalar);
+    }
     if (app.got_subcommand("list")) return cmd_list();
     if (app.got_subcommand(generate)) return cmd_generate(gen);
     if (app.got_subcommand(run_cmd)) return cmd_run(run);
@@ -108,6 +117,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
     if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);
     if (app.got_subcommand(uw_cmd)) return cmd_uw(uw);
+    if (app.got_subcommand(scalars_cmd)) return cmd_scalars(scalars);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());
     return 1;

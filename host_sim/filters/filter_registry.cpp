@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "filters/ekf_ca.hpp"
+#include "filters/ekf_ca_fixed.hpp"
 #include "filters/r2aekf_filters.hpp"
 
 namespace kestrel::sim {
@@ -15,6 +16,10 @@ const FilterEntry kFilters[] = {
      hal::FrameKind::kRadar, &ekf_ca_setup, &run_ekf_ca},
     {"ekf-ca-f32", "the same EKF-CA in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar,
      &ekf_ca_f32_setup, &run_ekf_ca_f32},
+    {"ekf-ca-q31_32", "the same EKF-CA in Q31.32 fixed point (the Cortex-M0+ scalar)", hal::FrameKind::kRadar,
+     &ekf_ca_q31_32_setup, &run_ekf_ca_q31_32},
+    {"ekf-ca-q23_40", "the same EKF-CA in Q23.40 fixed point", hal::FrameKind::kRadar, &ekf_ca_q23_40_setup,
+     &run_ekf_ca_q23_40},
     {"r2aekf", "R2-AEKF default mode (SPEC 5 corrections) on EKF-CA; double", hal::FrameKind::kRadar, &r2aekf_setup,
      &run_r2aekf},
     {"r2aekf-paper", "R2-AEKF paper mode (paper 000 eqs. 7-18 as printed); double", hal::FrameKind::kRadar,

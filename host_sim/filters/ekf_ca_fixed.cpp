@@ -1,0 +1,77 @@
+#include "filters/ekf_ca_fixed.hpp"
+
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#include "filters/ekf_ca.hpp"
+#include "kestrel/host/board.hpp"
+#include "kestrel/scalar/fixed_point_eigen.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
+#include "pipeline/stream_run.hpp"
+
+namespace kestrel::sim {
+
+namespace {
+
+/// What make_ekf_ca_tracker() builds for double and float, on Q.
+template <class Q>
+host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& options) {
+  using T = ScalarTraits<Q>;
+  const RadarTrackerParams p = ekf_ca_params(options);
+  const RadarTrackerScalars<Q> s = radar_tracker_scalars<Q>(p);
+  CaMotion<Q> motion;
+  motion.qj = s.qj;
+  CaPolarRadar<Q> radar;
+  radar.sigma_range_m = s.sigma_range_m;
+  radar.sigma_bearing_rad = s.sigma_bearing_rad;
+  const TwoPointInitiator<CaMotion<Q>, CaPolarRadar<Q>> init{radar, s.max_speed_mps, s.init_accel_sigma_mps2};
+  TrackerConfig<Q, 2> config = radar_tracker_config<Q>(p, s);
+  config.gate_confirmed_threshold =
+      options.confirmed_gate_d2.has_value() ? T::from_double(*options.confirmed_gate_d2) : T::max_value();
+  return host::BoardRadarTracker<EkfCa<Q>>(EkfCa<Q>(motion, radar), init, config);
+}
+
+template <class Q>
+StreamRunResult run_typed(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns) {
+  using Tracker = host::BoardRadarTracker<EkfCa<Q>>;
+  auto tracker = std::make_unique<Tracker>(make_fixed_tracker<Q>(options));
+  return run_stream(*tracker, std::move(stream), budget_ns);
+}
+
+FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
+  const RadarTrackerParams p = ekf_ca_params(options);
+  char label[96];
+  if (options.confirmed_gate_d2.has_value()) {
+    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g, gate d2 %g", scalar, p.qj, *options.confirmed_gate_d2);
+  } else {
+    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g", scalar, p.qj);
+  }
+  return FilterSetup{label,
+                     {{"qj", p.qj},
+                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
+                      {"sigma_range_m", p.sigma_range_m},
+                      {"sigma_bearing_rad", p.sigma_bearing_rad},
+                      {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
+                      {"confirm_m", p.confirm_m},
+                      {"confirm_n", p.confirm_n},
+                      {"max_coast_misses", p.max_coast_misses}}};
+}
+
+}  // namespace
+
+FilterSetup ekf_ca_q31_32_setup(const FilterOptions& options) { return setup_with(options, "Q31.32"); }
+FilterSetup ekf_ca_q23_40_setup(const FilterOptions& options) { return setup_with(options, "Q23.40"); }
+
+StreamRunResult run_ekf_ca_q31_32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+                                  std::uint64_t budget_ns) {
+  return run_typed<Q31_32>(std::move(stream), options, budget_ns);
+}
+
+StreamRunResult run_ekf_ca_q23_40(std::vector<std::uint8_t> stream, const FilterOptions& options,
+                                  std::uint64_t budget_ns) {
+  return run_typed<Q23_40>(std::move(stream), options, budget_ns);
+}
+
+}  // namespace kestrel::sim
