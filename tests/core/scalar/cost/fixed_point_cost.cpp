@@ -5,6 +5,8 @@
 //   filter/<scalar>/<form>   EKF predict + update per frame (one target)
 //   tracker/<scalar>/<form>  Tracker::step per frame (EKF-CA radar tracker,
 //                            qj 160 so one track holds S1 throughout)
+// It also prints, outside callgrind's collection, how long a track coasts
+// before its prediction saturates (docs/fixed-point.md, "Limits").
 // Run:
 //   valgrind --tool=callgrind --collect-atstart=no --callgrind-out-file=/tmp/cg.%p \
 //     build/<dir>/tests/core/scalar/kestrel-fixed-point-cost
@@ -100,6 +102,44 @@ void count_tracker(const char* scalar, const char* form) {
   std::printf("%s\n", label.c_str());
 }
 
+/// Coast the first confirmed track of S1 seed 1 after 100 frames at
+/// T = 0.5 s until predict() is refused; print how long that took.
+template <class Q>
+void coast(bool tuned) {
+  test::S1Options o;
+  o.seed = 1;
+  o.steps = 100;
+  o.tuned = tuned;
+  EkfCa<Q> f;
+  bool have = false;
+  test::run_s1<Q>(o, [&](int, const test::S1Sample&, const test::S1Tracker<Q>& tr) {
+    // The first confirmed track in table order, as it is after the last frame.
+    for (std::size_t i = 0; i < tr.tracks().capacity(); ++i) {
+      const auto& t = tr.tracks()[i];
+      if (tr.tracks().active(i) && t.initialised && t.status == TrackStatus::kConfirmed) {
+        f = t.filter;
+        have = true;
+        break;
+      }
+    }
+  });
+  if (!have) std::abort();
+  reset_fixed_point_overflow_count();
+  int k = 0;
+  double var_before = 0;
+  for (; k < 100000; ++k) {
+    const auto P = f.P();
+    if (f.predict(ScalarTraits<Q>::from_ratio(1, 2)) != Status::kOk) {
+      var_before = static_cast<double>(P(0, 0)) + static_cast<double>(P(3, 3));
+      break;
+    }
+  }
+  std::printf("coast Q%d.%d qj %s: predict refused after %d steps = %.1f s (var x + var y before: %.3g m^2), "
+              "saturations %u\n",
+              63 - Q::kFractionBits, Q::kFractionBits, tuned ? "160" : "1.6", k, 0.5 * k, var_before,
+              static_cast<unsigned>(fixed_point_overflow_count()));
+}
+
 }  // namespace
 
 int main() {
@@ -116,5 +156,9 @@ int main() {
   count_tracker<float, EkfUpdateForm::kSequentialWhitened>("float", "sequential");
   count_tracker<kestrel::Q31_32, EkfUpdateForm::kSequentialWhitened>("q31_32", "sequential");
   count_tracker<kestrel::Q23_40, EkfUpdateForm::kSequentialWhitened>("q23_40", "sequential");
+  coast<kestrel::Q31_32>(false);
+  coast<kestrel::Q31_32>(true);
+  coast<kestrel::Q23_40>(false);
+  coast<kestrel::Q23_40>(true);
   return 0;
 }
