@@ -5,6 +5,8 @@
 // Templated on the motion model only to read where x and y sit in its state.
 #pragma once
 
+#include <array>
+
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 
@@ -32,30 +34,46 @@ struct PolarRadar {
     const Scalar px = x(Motion::Layout::kX);
     const Scalar py = x(Motion::Layout::kY);
     Measurement z;
-    z << T::hypot(px, py), T::atan2(py, px);
+    z(kRange) = range_of(px, py);
+    z(kBearing) = T::atan2(py, px);
     return z;
   }
 
-  /// dh/dX: dr/dx = x/r, dr/dy = y/r, db/dx = -y/r^2, db/dy = x/r^2; zero
-  /// elsewhere. At r = 0 the entries are non-finite and the filter refuses
-  /// the update with kNonFinite (the radar cannot see a target on itself).
-  Jacobian jacobian(const State& x) const {
+  /// The state columns where dh/dX can be non-zero, x and y: structure the
+  /// filters use (kestrel/filters/structure.hpp).
+  static constexpr std::array<int, 2> kJacobianColumns = {Motion::Layout::kX, Motion::Layout::kY};
+  using CompactJacobian = Mat<Scalar, kMeasDim, 2>;
+
+  /// Columns x and y of dh/dX: dr/dx = x/r, dr/dy = y/r, db/dx = -y/r^2,
+  /// db/dy = x/r^2. At r = 0 the entries are non-finite and the filter
+  /// refuses the update with kNonFinite (the radar cannot see a target on
+  /// itself).
+  CompactJacobian jacobian_columns(const State& x) const {
     using T = ScalarTraits<Scalar>;
     const Scalar px = x(Motion::Layout::kX);
     const Scalar py = x(Motion::Layout::kY);
-    const Scalar r = T::hypot(px, py);
-    Jacobian H = Jacobian::Zero();
-    H(kRange, Motion::Layout::kX) = px / r;
-    H(kRange, Motion::Layout::kY) = py / r;
+    const Scalar r = range_of(px, py);
+    CompactJacobian Hc;
+    Hc(kRange, 0) = px / r;
+    Hc(kRange, 1) = py / r;
     if constexpr (T::kIsFixedPoint) {
       // r^2 would leave Q23.40's range beyond 2.9 km: divide by r twice.
-      H(kBearing, Motion::Layout::kX) = -H(kRange, Motion::Layout::kY) / r;
-      H(kBearing, Motion::Layout::kY) = H(kRange, Motion::Layout::kX) / r;
+      Hc(kBearing, 0) = -Hc(kRange, 1) / r;
+      Hc(kBearing, 1) = Hc(kRange, 0) / r;
     } else {
       const Scalar r2 = r * r;
-      H(kBearing, Motion::Layout::kX) = -py / r2;
-      H(kBearing, Motion::Layout::kY) = px / r2;
+      Hc(kBearing, 0) = -py / r2;
+      Hc(kBearing, 1) = px / r2;
     }
+    return Hc;
+  }
+
+  /// dh/dX: jacobian_columns() in columns x and y, zero elsewhere.
+  Jacobian jacobian(const State& x) const {
+    const CompactJacobian Hc = jacobian_columns(x);
+    Jacobian H = Jacobian::Zero();
+    H.col(Motion::Layout::kX) = Hc.col(0);
+    H.col(Motion::Layout::kY) = Hc.col(1);
     return H;
   }
 
@@ -72,6 +90,20 @@ struct PolarRadar {
     Measurement nu = z - z_hat;
     nu(kBearing) = wrap_angle(nu(kBearing));
     return nu;
+  }
+
+  /// sqrt(x^2 + y^2). Floating point: the plain formula (no overflow below
+  /// 1e154 m in double and 1e19 m in float, and within an ulp of
+  /// std::hypot, whose rescaling costs about a hundred instructions per
+  /// call, twice per update). Fixed point: its own hypot, which keeps the
+  /// squares inside the Q range.
+  static Scalar range_of(Scalar px, Scalar py) {
+    using T = ScalarTraits<Scalar>;
+    if constexpr (T::kIsFixedPoint) {
+      return T::hypot(px, py);
+    } else {
+      return T::sqrt(px * px + py * py);
+    }
   }
 
   /// Cartesian position of a measurement and its first-order covariance

@@ -15,6 +15,9 @@ struct ConstantAcceleration2D {
   using Scalar = S;
   static constexpr int kStateDim = 6;
   static constexpr int kAxisDim = 3;
+  /// F1 is unit upper triangular (structure the filters exploit,
+  /// kestrel/filters/structure.hpp).
+  static constexpr bool kAxisTransitionUnitUpper = true;
 
   /// Where each quantity sits in the state vector (PX4-style named layout).
   struct Layout {
@@ -49,11 +52,20 @@ struct ConstantAcceleration2D {
     const S t3 = t2 * dt;
     const S t4 = t3 * dt;
     const S t5 = t4 * dt;
+    const S q02 = t3 / S(6) * qj;
+    const S q01 = t4 / S(8) * qj;
+    const S q12 = t2 / S(2) * qj;
     AxisMat Q1;
-    Q1 << t5 / S(20), t4 / S(8), t3 / S(6),
-          t4 / S(8),  t3 / S(3), t2 / S(2),
-          t3 / S(6),  t2 / S(2), dt;
-    return Q1 * qj;
+    Q1(0, 0) = t5 / S(20) * qj;
+    Q1(0, 1) = q01;
+    Q1(0, 2) = q02;
+    Q1(1, 0) = q01;
+    Q1(1, 1) = t3 / S(3) * qj;
+    Q1(1, 2) = q12;
+    Q1(2, 0) = q02;
+    Q1(2, 1) = q12;
+    Q1(2, 2) = dt * qj;
+    return Q1;
   }
 
   /// F(dt) = blkdiag(F1, F1).
@@ -74,8 +86,17 @@ struct ConstantAcceleration2D {
     return Q;
   }
 
-  /// Noise-free propagation x(t + dt) = F(dt) x(t).
-  State propagate(const State& x, S dt) const { return transition(dt) * x; }
+  /// Noise-free propagation x(t + dt) = F(dt) x(t), per axis.
+  State propagate(const State& x, S dt) const {
+    const S half_t2 = dt * dt / S(2);
+    State out;
+    for (int a = 0; a < kStateDim; a += kAxisDim) {
+      out(a) = x(a) + dt * x(a + 1) + half_t2 * x(a + 2);
+      out(a + 1) = x(a + 1) + dt * x(a + 2);
+      out(a + 2) = x(a + 2);
+    }
+    return out;
+  }
 
   /// Jacobian of propagate() (the model is linear, so it is F).
   Cov jacobian(const State& /*x*/, S dt) const { return transition(dt); }

@@ -1,0 +1,385 @@
+// Model structure the generic filters exploit when a model exposes it
+// (issue 9), detected at compile time, with the dense arithmetic as the
+// fallback, the test oracle and the baseline. No filter is written twice: a
+// filter asks "does this model expose X?" (a concept below) and calls the
+// kernel here in place of the dense product; the rest of the filter is
+// shared.
+//
+//   - Block-diagonal motion (CA-2D): the state is kStateDim / kAxisDim
+//     consecutive axes, F = blkdiag(F1, ..., F1), Q = blkdiag(Q1, ..., Q1),
+//     with F1 = axis_transition(dt) and Q1 = axis_process_noise(dt). F P F^T
+//     is then taken block by block, F1 P_ij F1^T, on the upper blocks and
+//     each diagonal block's upper triangle, the rest mirrored (exactly
+//     symmetric); a model that also declares F1 unit upper triangular
+//     (kAxisTransitionUnitUpper, any kinematic chain) has F1's structural
+//     zeros and ones skipped: 44 multiply-adds for CA-2D against 432 for the
+//     dense 6x6 triple product.
+//   - A measurement Jacobian with few non-zero columns (polar radar: x and y
+//     only): kJacobianColumns names them, jacobian_columns(x) returns them.
+//     Then P H^T = P(:, cols) Hc^T and H P H^T = Hc P(cols, cols) Hc^T, and
+//     the Joseph update is taken in its expanded form
+//       (I - K H) P (I - K H)^T + K R K^T = P - K (P H^T)^T - (P H^T) K^T + K S K^T,
+//     the same matrix for any K (so, like the product form, first-order
+//     insensitive to round-off in K), on the upper triangle, mirrored.
+//   - Small m x m innovation covariances (m = kMeasDim) are factored by an
+//     unrolled Cholesky (gain(), nis()) instead of Eigen's LLT.
+// Every loop over a fixed dimension is a compile-time fold (static_for), so
+// the kernels index with constants at -O2.
+//
+// Dense<M> is model M with its structure hidden: the filters take their
+// dense path. Tests compare the two paths (tests/core/filters/structured_*),
+// and kestrel-bench / kestrel-instr-count measure them side by side.
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/models/concepts.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+
+namespace kestrel {
+
+/// A model that declares kHideStructure = true (Dense<M>) is treated as dense.
+template <class M>
+concept HidesStructure = requires { requires M::kHideStructure; };
+
+/// A motion model whose Jacobian and process noise are block-diagonal over
+/// consecutive axes (contract: jacobian(x, dt) = blkdiag(axis_transition(dt), ...)
+/// and process_noise(dt) = blkdiag(axis_process_noise(dt), ...)).
+template <class M>
+concept BlockDiagonalMotion =
+    MotionModel<M> && !HidesStructure<M> && requires(const M& m, typename M::Scalar dt) {
+      requires M::kAxisDim > 0;
+      requires M::kStateDim % M::kAxisDim == 0;
+      { m.axis_transition(dt) } -> std::same_as<Mat<typename M::Scalar, M::kAxisDim, M::kAxisDim>>;
+      { m.axis_process_noise(dt) } -> std::same_as<Mat<typename M::Scalar, M::kAxisDim, M::kAxisDim>>;
+    };
+
+/// A block-diagonal motion model whose F1 is unit upper triangular (every
+/// kinematic chain: position <- velocity <- acceleration), declared with
+/// kAxisTransitionUnitUpper = true: the transform skips F1's structural
+/// zeros and ones.
+template <class M>
+concept UnitUpperAxisTransition = BlockDiagonalMotion<M> && requires { requires M::kAxisTransitionUnitUpper; };
+
+/// A measurement model whose Jacobian is zero outside the state columns
+/// kJacobianColumns (contract: jacobian(x) has jacobian_columns(x).col(j) in
+/// column kJacobianColumns[j] and zeros elsewhere).
+template <class H>
+concept SparseJacobianMeasurement = !HidesStructure<H> && requires(const H& h, const typename H::State& x) {
+  { H::kJacobianColumns.size() } -> std::convertible_to<std::size_t>;
+  {
+    h.jacobian_columns(x)
+  } -> std::same_as<Mat<typename H::Scalar, H::kMeasDim, static_cast<int>(H::kJacobianColumns.size())>>;
+};
+
+/// Model M with its structure hidden from the filters (dense path): the
+/// baseline and the test oracle of the structured path. Everything else of
+/// M (parameters, layout, helpers) is inherited unchanged.
+template <class M>
+struct Dense : M {
+  static constexpr bool kHideStructure = true;
+  Dense() = default;
+  explicit Dense(const M& m) : M(m) {}
+};
+
+namespace structure {
+
+/// f(std::integral_constant<int, i>{}) for i = kBegin .. kEnd-1, expanded at
+/// compile time (a fold, not a loop): the kernels below index fixed-size
+/// matrices with constants, so no loop counter or index arithmetic is left
+/// at -O2, where GCC leaves nested loops rolled.
+template <int kBegin, int kEnd, class F>
+constexpr void static_for(F&& f) {
+  if constexpr (kBegin < kEnd) {
+    [&]<int... i>(std::integer_sequence<int, i...>) {
+      (f(std::integral_constant<int, kBegin + i>{}), ...);
+    }(std::make_integer_sequence<int, kEnd - kBegin>{});
+  }
+}
+
+/// F P F^T for block-diagonal F, block by block: the upper blocks only,
+/// each diagonal block's upper triangle, the rest mirrored, so the result
+/// is exactly symmetric. With a unit upper triangular F1 the structural
+/// zeros and ones of F1 are skipped.
+template <BlockDiagonalMotion M>
+typename M::Cov transform_covariance(const M& motion, const typename M::Cov& P, typename M::Scalar dt) {
+  using S = typename M::Scalar;
+  constexpr int d = M::kAxisDim;
+  constexpr int kAxes = M::kStateDim / d;
+  constexpr bool kUnitUpper = UnitUpperAxisTransition<M>;
+  const Mat<S, d, d> F1 = motion.axis_transition(dt);
+  typename M::Cov out;
+  static_for<0, kAxes>([&](auto ia) {
+    constexpr int i = decltype(ia)::value;
+    static_for<i, kAxes>([&](auto ja) {
+      constexpr int j = decltype(ja)::value;
+      // G = F1 P_ij.
+      Mat<S, d, d> G;
+      static_for<0, d>([&](auto ra) {
+        constexpr int r = decltype(ra)::value;
+        static_for<0, d>([&](auto ca) {
+          constexpr int c = decltype(ca)::value;
+          S v = kUnitUpper ? P(i * d + r, j * d + c) : F1(r, r) * P(i * d + r, j * d + c);
+          static_for<(kUnitUpper ? r + 1 : 0), d>([&](auto ka) {
+            constexpr int k = decltype(ka)::value;
+            if constexpr (k != r) v += F1(r, k) * P(i * d + k, j * d + c);
+          });
+          G(r, c) = v;
+        });
+      });
+      // B = G F1^T: the upper triangle of a diagonal block, all of an
+      // off-diagonal one; each entry also written to its mirror.
+      static_for<0, d>([&](auto ra) {
+        constexpr int r = decltype(ra)::value;
+        static_for<(i == j ? r : 0), d>([&](auto ca) {
+          constexpr int c = decltype(ca)::value;
+          S v = kUnitUpper ? G(r, c) : G(r, c) * F1(c, c);
+          static_for<(kUnitUpper ? c + 1 : 0), d>([&](auto ka) {
+            constexpr int k = decltype(ka)::value;
+            if constexpr (k != c) v += G(r, k) * F1(c, k);
+          });
+          out(i * d + r, j * d + c) = v;
+          out(j * d + c, i * d + r) = v;
+        });
+      });
+    });
+  });
+  return out;
+}
+
+/// P += blkdiag(Q1, ..., Q1) with Q1 = axis_process_noise(dt), symmetrised.
+template <BlockDiagonalMotion M>
+void add_process_noise(const M& motion, typename M::Cov& P, typename M::Scalar dt) {
+  using S = typename M::Scalar;
+  constexpr int d = M::kAxisDim;
+  constexpr int kAxes = M::kStateDim / d;
+  const Mat<S, d, d> Q1 = motion.axis_process_noise(dt);
+  static_for<0, d>([&](auto ra) {
+    constexpr int r = decltype(ra)::value;
+    static_for<r, d>([&](auto ca) {
+      constexpr int c = decltype(ca)::value;
+      const S q = r == c ? Q1(r, r) : (Q1(r, c) + Q1(c, r)) * S(0.5);
+      static_for<0, kAxes>([&](auto ia) {
+        constexpr int i = decltype(ia)::value;
+        P(i * d + r, i * d + c) += q;
+        if constexpr (r != c) P(i * d + c, i * d + r) += q;
+      });
+    });
+  });
+}
+
+/// P + (Q + Q^T) / 2 for a full Q (the explicit-Q predict of adaptive filters).
+template <class S, int n>
+void add_symmetrised(Mat<S, n, n>& P, const Mat<S, n, n>& Q) {
+  static_for<0, n>([&](auto ca) {
+    constexpr int c = decltype(ca)::value;
+    static_for<0, c + 1>([&](auto ra) {
+      constexpr int r = decltype(ra)::value;
+      const S q = (Q(r, c) + Q(c, r)) * S(0.5);
+      P(r, c) += q;
+      if constexpr (r != c) P(c, r) += q;
+    });
+  });
+}
+
+/// S = L L^T, L lower triangular.
+/// @return false if S is not positive definite.
+template <class S, int m>
+bool cholesky_lower(const Mat<S, m, m>& Sm, Mat<S, m, m>& L) {
+  bool ok = true;
+  static_for<0, m>([&](auto ja) {
+    constexpr int j = decltype(ja)::value;
+    S dj = Sm(j, j);
+    static_for<0, j>([&](auto ka) { dj -= L(j, decltype(ka)::value) * L(j, decltype(ka)::value); });
+    ok = ok && dj > S(0);
+    L(j, j) = ScalarTraits<S>::sqrt(dj > S(0) ? dj : S(1));
+    static_for<j + 1, m>([&](auto ia) {
+      constexpr int i = decltype(ia)::value;
+      S v = Sm(i, j);
+      static_for<0, j>([&](auto ka) { v -= L(i, decltype(ka)::value) * L(j, decltype(ka)::value); });
+      L(i, j) = v / L(j, j);
+    });
+  });
+  return ok;
+}
+
+/// nu^T S^-1 nu = |L^-1 nu|^2 (forward substitution).
+/// @return false if S is not positive definite.
+template <class S, int m>
+bool nis(const Mat<S, m, m>& Sm, const Vec<S, m>& nu, S& d2) {
+  Mat<S, m, m> L = Mat<S, m, m>::Zero();
+  if (!cholesky_lower(Sm, L)) return false;
+  S sum(0);
+  Vec<S, m> y;
+  static_for<0, m>([&](auto ia) {
+    constexpr int i = decltype(ia)::value;
+    S v = nu(i);
+    static_for<0, i>([&](auto ka) { v -= L(i, decltype(ka)::value) * y(decltype(ka)::value); });
+    y(i) = v / L(i, i);
+    sum += y(i) * y(i);
+  });
+  d2 = sum;
+  return true;
+}
+
+/// The gain of an update from P H^T and S: K = P H^T S^-1, with
+/// S^-1 = L^-T L^-1 from the Cholesky factor (S^-1 also gives the NIS).
+/// @return false if S is not positive definite.
+template <class S, int n, int m>
+bool gain(const Mat<S, n, m>& PHt, const Mat<S, m, m>& Sm, Mat<S, n, m>& K, Mat<S, m, m>& Sinv) {
+  Mat<S, m, m> L = Mat<S, m, m>::Zero();
+  if (!cholesky_lower(Sm, L)) return false;
+  Mat<S, m, m> W = Mat<S, m, m>::Zero();  // L^-1, lower triangular
+  static_for<0, m>([&](auto ja) {
+    constexpr int j = decltype(ja)::value;
+    W(j, j) = S(1) / L(j, j);
+    static_for<j + 1, m>([&](auto ia) {
+      constexpr int i = decltype(ia)::value;
+      S v(0);
+      static_for<j, i>([&](auto ka) { v -= L(i, decltype(ka)::value) * W(decltype(ka)::value, j); });
+      W(i, j) = v / L(i, i);
+    });
+  });
+  static_for<0, m>([&](auto ra) {
+    constexpr int r = decltype(ra)::value;
+    static_for<r, m>([&](auto ca) {
+      constexpr int c = decltype(ca)::value;
+      S v(0);
+      static_for<c, m>([&](auto ka) { v += W(decltype(ka)::value, r) * W(decltype(ka)::value, c); });
+      Sinv(r, c) = v;
+      Sinv(c, r) = v;
+    });
+  });
+  K.noalias() = PHt * Sinv;
+  return true;
+}
+
+/// The non-zero columns of H, and the products the EKF needs from them.
+template <SparseJacobianMeasurement H>
+struct SparseJacobian {
+  using Scalar = typename H::Scalar;
+  static constexpr int kMeasDim = H::kMeasDim;
+  static constexpr int kStateDim = H::kStateDim;
+  static constexpr int kCols = static_cast<int>(H::kJacobianColumns.size());
+  using Compact = Mat<Scalar, kMeasDim, kCols>;
+  using Cov = Mat<Scalar, kStateDim, kStateDim>;
+  using PHt = Mat<Scalar, kStateDim, kMeasDim>;
+  using MeasCov = Mat<Scalar, kMeasDim, kMeasDim>;
+
+  Compact Hc;  ///< Column j is column kJacobianColumns[j] of the full H.
+
+  static constexpr int col(int j) { return H::kJacobianColumns[static_cast<std::size_t>(j)]; }
+
+  /// The full H (zeros outside the columns).
+  Mat<Scalar, kMeasDim, kStateDim> full() const {
+    Mat<Scalar, kMeasDim, kStateDim> out = Mat<Scalar, kMeasDim, kStateDim>::Zero();
+    static_for<0, kCols>([&](auto ja) { out.col(col(decltype(ja)::value)) = Hc.col(decltype(ja)::value); });
+    return out;
+  }
+
+  /// P H^T = P(:, cols) Hc^T (vectorised over the rows of P).
+  PHt p_ht(const Cov& P) const {
+    PHt out;
+    static_for<0, kMeasDim>([&](auto ia) {
+      constexpr int i = decltype(ia)::value;
+      out.col(i) = P.col(col(0)) * Hc(i, 0);
+      static_for<1, kCols>([&](auto ja) {
+        constexpr int j = decltype(ja)::value;
+        out.col(i) += P.col(col(j)) * Hc(i, j);
+      });
+    });
+    return out;
+  }
+
+  /// H P H^T = Hc P(cols, cols) Hc^T, upper triangle mirrored (exactly
+  /// symmetric). Depends on the state only through Hc: the EKF caches it.
+  MeasCov hpht(const Cov& P) const {
+    Mat<Scalar, kMeasDim, kCols> HP;  // Hc P(cols, cols)
+    static_for<0, kMeasDim>([&](auto ia) {
+      constexpr int i = decltype(ia)::value;
+      static_for<0, kCols>([&](auto ba) {
+        constexpr int b = decltype(ba)::value;
+        Scalar v = Hc(i, 0) * P(col(0), col(b));
+        static_for<1, kCols>([&](auto aa) {
+          constexpr int a = decltype(aa)::value;
+          v += Hc(i, a) * P(col(a), col(b));
+        });
+        HP(i, b) = v;
+      });
+    });
+    MeasCov out;
+    static_for<0, kMeasDim>([&](auto ca) {
+      constexpr int c = decltype(ca)::value;
+      static_for<0, c + 1>([&](auto ra) {
+        constexpr int r = decltype(ra)::value;
+        Scalar v = HP(r, 0) * Hc(c, 0);
+        static_for<1, kCols>([&](auto ba) {
+          constexpr int b = decltype(ba)::value;
+          v += HP(r, b) * Hc(c, b);
+        });
+        out(r, c) = v;
+        out(c, r) = v;
+      });
+    });
+    return out;
+  }
+};
+
+/// A measurement linearised at a state x and covariance P: h(x), the
+/// non-zero Jacobian columns and H P H^T. The EKF keeps one, so the gate's
+/// innovation() of every candidate in a frame and the update that follows
+/// share a single h(x) (an atan2 and a sqrt for the polar radar), Jacobian
+/// and H P H^T; any change of x, P or the model invalidates it.
+template <SparseJacobianMeasurement H>
+struct Linearisation {
+  typename H::Measurement z_hat;               ///< h(x).
+  SparseJacobian<H> J;                         ///< Non-zero columns of dh/dx at x.
+  typename SparseJacobian<H>::MeasCov HPHt;    ///< H P H^T (exactly symmetric).
+  bool valid = false;                          ///< false: recompute before use.
+};
+
+/// Placeholder of the cache for a measurement without the structure.
+struct NoLinearisation {};
+
+/// Linearisation<H> if H has a sparse Jacobian, NoLinearisation otherwise.
+template <class H>
+struct LinearisationFor {
+  using type = NoLinearisation;
+};
+template <SparseJacobianMeasurement H>
+struct LinearisationFor<H> {
+  using type = Linearisation<H>;
+};
+
+/// The Joseph-form update in its expanded form on the upper triangle:
+/// P - K PHt^T - PHt K^T + (K S) K^T, mirrored (exactly symmetric).
+template <class Scalar, int n, int m>
+Mat<Scalar, n, n> joseph_update(const Mat<Scalar, n, n>& P, const Mat<Scalar, n, m>& K,
+                                const Mat<Scalar, n, m>& PHt, const Mat<Scalar, m, m>& S) {
+  // E = K S - P H^T: zero in exact arithmetic; kept, it makes the result the
+  // Joseph form of the K actually computed.
+  Mat<Scalar, n, m> E;
+  E.noalias() = K * S;
+  E -= PHt;
+  Mat<Scalar, n, n> out;
+  // Column c, rows 0..c (vectorised down the column), then mirrored into row c.
+  static_for<0, n>([&](auto ca) {
+    constexpr int c = decltype(ca)::value;
+    auto col = out.col(c).template head<c + 1>();
+    col = P.col(c).template head<c + 1>();
+    static_for<0, m>([&](auto ia) {
+      constexpr int i = decltype(ia)::value;
+      col += E.col(i).template head<c + 1>() * K(c, i) - K.col(i).template head<c + 1>() * PHt(c, i);
+    });
+    static_for<0, c>([&](auto ra) { out(c, decltype(ra)::value) = out(decltype(ra)::value, c); });
+  });
+  return out;
+}
+
+}  // namespace structure
+}  // namespace kestrel
