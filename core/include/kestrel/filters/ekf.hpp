@@ -22,11 +22,22 @@
 // scalar Joseph form P - K PHt^T - PHt K^T + s K K^T keeps P symmetric.
 // The NIS is the sum of the channels' nu_i^2 / s_i; innovation() gets the
 // same value from an LDL^T of the whitened S (divisors >= 1 again).
+//
+// Model structure (kestrel/filters/structure.hpp, issue 9) is used when the
+// models expose it, detected at compile time: a block-diagonal motion model
+// gets F P F^T and Q per axis block; a measurement model with few non-zero
+// Jacobian columns gets P H^T and H P H^T from those columns, the Joseph
+// form expanded on the upper triangle, and one linearisation (h(x), the
+// Jacobian columns, H P H^T) shared by every innovation() and the update
+// until x or P changes. Without the structure (or with Dense<M> models) the
+// dense products below run: the baseline and the test oracle.
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "kestrel/filters/innovation.hpp"
+#include "kestrel/filters/structure.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
 #include "kestrel/models/concepts.hpp"
@@ -63,6 +74,13 @@ class Ekf {
   using MeasCov = typename Measurement::NoiseCov;
   using Jacobian = Mat<Scalar, kMeasDim, kStateDim>;
   static constexpr EkfUpdateForm kUpdateForm = kForm;
+  /// Model structure in use (structure.hpp). Floating-point scalars only:
+  /// the fixed-point path keeps the dense arithmetic its golden hashes were
+  /// recorded with (issue 8) until they are re-recorded deliberately.
+  static constexpr bool kBlockPredict =
+      BlockDiagonalMotion<Motion> && !ScalarTraits<typename Motion::Scalar>::kIsFixedPoint;
+  static constexpr bool kSparseUpdate =
+      SparseJacobianMeasurement<Measurement> && !ScalarTraits<typename Motion::Scalar>::kIsFixedPoint;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
 
@@ -78,23 +96,34 @@ class Ekf {
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     x_ = x;
     P_ = symmetrised(P);
+    invalidate_linearisation();
     return Status::kOk;
   }
 
   /// Predict by dt seconds with the model's process noise Q(dt).
   /// @return kOk; kNonFinite (filter unchanged).
-  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+  [[nodiscard]] Status predict(Scalar dt) {
+    if constexpr (kBlockPredict) {
+      // F P F^T and Q per axis block.
+      Cov P = structure::transform_covariance(motion_, P_, dt);
+      structure::add_process_noise(motion_, P, dt);
+      return commit_prediction(motion_.propagate(x_, dt), P);
+    } else {
+      return predict(dt, motion_.process_noise(dt));
+    }
+  }
 
   /// Predict by dt seconds with an explicit process noise Q (adaptive filters).
   /// @return kOk; kNonFinite (filter unchanged).
   [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
-    const Cov F = motion_.jacobian(x_, dt);
-    const State x = motion_.propagate(x_, dt);
-    const Cov P = symmetrised(F * P_ * F.transpose() + Q);
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
-    x_ = x;
-    P_ = P;
-    return Status::kOk;
+    if constexpr (kBlockPredict) {
+      Cov P = structure::transform_covariance(motion_, P_, dt);
+      structure::add_symmetrised(P, Q);
+      return commit_prediction(motion_.propagate(x_, dt), P);
+    } else {
+      const Cov F = motion_.jacobian(x_, dt);
+      return commit_prediction(motion_.propagate(x_, dt), symmetrised(F * P_ * F.transpose() + Q));
+    }
   }
 
   /// Innovation of z against the current (predicted) state with the model's R.
@@ -106,6 +135,20 @@ class Ekf {
     Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};
     if (!all_finite(z) || !all_finite(R)) {
       out.status = Status::kNonFinite;
+      return out;
+    }
+    if constexpr (kSparseUpdate) {
+      const auto& lin = linearisation();
+      out.nu = measurement_.residual(z, lin.z_hat);
+      out.S = lin.HPHt;
+      structure::add_symmetrised(out.S, R);
+      if (!all_finite(lin.J.Hc) || !all_finite(out.nu) || !all_finite(out.S)) {
+        out.status = Status::kNonFinite;
+      } else if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
+        if (!whitened_nis(lin.J.full(), out.nu, R, out.d2)) out.status = Status::kNotPositiveDefinite;
+      } else {
+        if (!structure::nis(out.S, out.nu, out.d2)) out.status = Status::kNotPositiveDefinite;
+      }
       return out;
     }
     const auto H = measurement_.jacobian(x_);
@@ -147,6 +190,9 @@ class Ekf {
   [[nodiscard]] Status update_batch(const MeasVec& z, const MeasCov& R) {
     diag_.fused = false;
     if (!all_finite(z) || !all_finite(R)) return fail(Status::kNonFinite);
+    if constexpr (kSparseUpdate) {
+      return update_structured(z, R);
+    }
     const auto H = measurement_.jacobian(x_);
     const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
     const MeasCov S = symmetrised(H * P_ * H.transpose() + R);
@@ -156,8 +202,9 @@ class Ekf {
 
     // K = P H^T S^-1, computed as (S^-1 H P)^T since S and P are symmetric.
     // One vector solve per column: a matrix right-hand side sends Eigen to
-    // its blocked triangular solver, which may call malloc (the board's heap
-    // guard caught it); vector solves unroll on fixed-size storage.
+    // its blocked triangular solver (alloca, plus a malloc branch for large
+    // sizes that a board's link-time heap guard rejects); the fixed-size
+    // vector solve is unrolled and allocation-free.
     const Mat<Scalar, kMeasDim, kStateDim> HP = H * P_;
     Mat<Scalar, kMeasDim, kStateDim> SinvHP;
     for (int c = 0; c < kStateDim; ++c) SinvHP.col(c) = llt.solve(HP.col(c));
@@ -169,9 +216,40 @@ class Ekf {
 
     x_ = x;
     P_ = P;
+    invalidate_linearisation();
     diag_.innovation = nu;
     diag_.innovation_variance = S.diagonal();
     diag_.nis = nu.dot(llt.solve(nu));
+    diag_.fused = true;
+    diag_.status = Status::kOk;
+    return Status::kOk;
+  }
+
+  /// Batch form on the non-zero Jacobian columns (structure.hpp): the
+  /// shared linearisation, K = P H^T S^-1 through an unrolled Cholesky of S,
+  /// the Joseph form expanded on the upper triangle.
+  [[nodiscard]] Status update_structured(const MeasVec& z, const MeasCov& R)
+    requires kSparseUpdate
+  {
+    const auto& lin = linearisation();
+    const MeasVec nu = measurement_.residual(z, lin.z_hat);
+    MeasCov S = lin.HPHt;
+    structure::add_symmetrised(S, R);
+    if (!all_finite(lin.J.Hc) || !all_finite(nu) || !all_finite(S)) return fail(Status::kNonFinite);
+    const Mat<Scalar, kStateDim, kMeasDim> PHt = lin.J.p_ht(P_);
+    Mat<Scalar, kStateDim, kMeasDim> K;
+    MeasCov Sinv;
+    if (!structure::gain(PHt, S, K, Sinv)) return fail(Status::kNotPositiveDefinite);
+    const State x = x_ + K * nu;
+    const Cov P = structure::joseph_update(P_, K, PHt, S);
+    if (!all_finite(x) || !all_finite(P)) return fail(Status::kNonFinite);
+
+    x_ = x;
+    P_ = P;
+    invalidate_linearisation();
+    diag_.innovation = nu;
+    diag_.innovation_variance = S.diagonal();
+    diag_.nis = nu.dot(Sinv * nu);
     diag_.fused = true;
     diag_.status = Status::kOk;
     return Status::kOk;
@@ -228,6 +306,7 @@ class Ekf {
 
     x_ = x;
     P_ = P;
+    invalidate_linearisation();
     diag_.innovation = nu;
     diag_.innovation_variance = s_diag;
     diag_.nis = nis;
@@ -298,11 +377,41 @@ class Ekf {
   const Motion& motion() const { return motion_; }
   const Measurement& measurement() const { return measurement_; }
   Motion& motion() { return motion_; }
-  Measurement& measurement() { return measurement_; }
+  /// Mutable model access drops the shared linearisation (its parameters may change).
+  Measurement& measurement() {
+    invalidate_linearisation();
+    return measurement_;
+  }
   /// Diagnostics of the last update attempt.
   const Diagnostics& diagnostics() const { return diag_; }
 
  private:
+  [[nodiscard]] Status commit_prediction(const State& x, const Cov& P) {
+    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    x_ = x;
+    P_ = P;
+    invalidate_linearisation();
+    return Status::kOk;
+  }
+
+  /// h(x), the Jacobian columns and H P H^T at the current x and P,
+  /// computed on first use after any change.
+  const auto& linearisation() const
+    requires kSparseUpdate
+  {
+    if (!lin_.valid) {
+      lin_.z_hat = measurement_.predict(x_);
+      lin_.J.Hc = measurement_.jacobian_columns(x_);
+      lin_.HPHt = lin_.J.hpht(P_);
+      lin_.valid = true;
+    }
+    return lin_;
+  }
+
+  void invalidate_linearisation() {
+    if constexpr (kSparseUpdate) lin_.valid = false;
+  }
+
   Status fail(Status s) {
     diag_.status = s;
     return s;
@@ -313,6 +422,11 @@ class Ekf {
   State x_;
   Cov P_;
   Diagnostics diag_;
+  // Shared linearisation (sparse-Jacobian models only); like any filter
+  // here, one object is not to be used from two threads at once.
+  mutable std::conditional_t<kSparseUpdate, typename structure::LinearisationFor<Measurement>::type,
+                             structure::NoLinearisation>
+      lin_{};
 };
 
 }  // namespace kestrel

@@ -337,9 +337,12 @@ struct SparseJacobian {
 /// and H P H^T; any change of x, P or the model invalidates it.
 template <SparseJacobianMeasurement H>
 struct Linearisation {
-  typename H::Measurement z_hat;               ///< h(x).
-  SparseJacobian<H> J;                         ///< Non-zero columns of dh/dx at x.
-  typename SparseJacobian<H>::MeasCov HPHt;    ///< H P H^T (exactly symmetric).
+  // Zero-initialised: never read while invalid, but a filter copied before
+  // its first innovation copies them, and copying indeterminate values is
+  // undefined (GCC's -Wmaybe-uninitialized says so).
+  typename H::Measurement z_hat = H::Measurement::Zero();             ///< h(x).
+  SparseJacobian<H> J{SparseJacobian<H>::Compact::Zero()};             ///< Non-zero columns of dh/dx at x.
+  typename SparseJacobian<H>::MeasCov HPHt = SparseJacobian<H>::MeasCov::Zero();  ///< H P H^T (exactly symmetric).
   bool valid = false;                          ///< false: recompute before use.
 };
 

@@ -1,8 +1,12 @@
 // A static table of tracks with compile-time capacity (SPEC section 7). Slots
 // are reused; a track's id is stable for its life and ids are not reused
-// until the 32-bit counter wraps. Every loop is over kCapacity.
+// until the 32-bit counter wraps. Every loop is over kCapacity. A bitmask of
+// the allocated slots lets the tracker visit the active tracks only
+// (active_slots()), so a frame with one track does not pay for scanning the
+// whole capacity five times (issue 9).
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 
@@ -22,6 +26,11 @@ class TrackTable {
  public:
   static constexpr std::size_t kMaxTracks = kCapacity;
 
+ private:
+  static constexpr std::size_t kWords = (kCapacity + 63) / 64;
+  static constexpr std::uint64_t bit(std::size_t i) { return std::uint64_t{1} << (i % 64); }
+
+ public:
   /// Take a free slot for a new tentative track with the next id.
   /// @return the slot index, or kCapacity when the table is full.
   std::size_t allocate(const TrackT& prototype) {
@@ -31,13 +40,17 @@ class TrackTable {
         slots_[i].status = TrackStatus::kTentative;
         slots_[i].id = next_id_;
         next_id_ = next_id_ == UINT32_MAX ? 1u : next_id_ + 1u;
+        mask_[i / 64] |= bit(i);
         return i;
       }
     }
     return kCapacity;
   }
 
-  void release(std::size_t i) { slots_[i].status = TrackStatus::kFree; }
+  void release(std::size_t i) {
+    slots_[i].status = TrackStatus::kFree;
+    mask_[i / 64] &= ~bit(i);
+  }
 
   bool active(std::size_t i) const { return slots_[i].status != TrackStatus::kFree; }
   TrackT& operator[](std::size_t i) { return slots_[i]; }
@@ -45,17 +58,55 @@ class TrackTable {
 
   std::size_t size() const {
     std::size_t n = 0;
-    for (std::size_t i = 0; i < kCapacity; ++i) n += active(i) ? 1u : 0u;
+    for (std::size_t w = 0; w < kWords; ++w) n += static_cast<std::size_t>(std::popcount(mask_[w]));
     return n;
   }
   static constexpr std::size_t capacity() { return kCapacity; }
 
   void clear() {
     for (std::size_t i = 0; i < kCapacity; ++i) slots_[i].status = TrackStatus::kFree;
+    for (std::size_t w = 0; w < kWords; ++w) mask_[w] = 0;
   }
+
+  /// Forward iterator over the allocated slot indices, increasing. Each
+  /// 64-slot word is copied when the iteration reaches it: releasing the
+  /// current slot (or an earlier one) during the loop is safe; releasing a
+  /// later slot or allocating during the loop is not supported.
+  class SlotIterator {
+   public:
+    struct End {};
+    explicit SlotIterator(const std::uint64_t* words) : words_(words), bits_(words[0]) { skip_empty(); }
+    std::size_t operator*() const { return word_ * 64 + static_cast<std::size_t>(std::countr_zero(bits_)); }
+    SlotIterator& operator++() {
+      bits_ &= bits_ - 1;  // drop the lowest set bit
+      skip_empty();
+      return *this;
+    }
+    bool operator!=(End) const { return word_ < kWords; }
+
+   private:
+    void skip_empty() {
+      while (bits_ == 0 && word_ < kWords) {  // at most kWords steps
+        ++word_;
+        bits_ = word_ < kWords ? words_[word_] : 0;
+      }
+    }
+    const std::uint64_t* words_;
+    std::size_t word_ = 0;
+    std::uint64_t bits_;
+  };
+  struct SlotRange {
+    const std::uint64_t* words;
+    SlotIterator begin() const { return SlotIterator(words); }
+    SlotIterator::End end() const { return {}; }
+  };
+
+  /// The active slots, in increasing index order (for (std::size_t i : table.active_slots())).
+  SlotRange active_slots() const { return SlotRange{mask_}; }
 
  private:
   TrackT slots_[kCapacity]{};
+  std::uint64_t mask_[kWords] = {};  ///< Bit i % 64 of word i / 64: slot i allocated.
   std::uint32_t next_id_ = 1;
 };
 

@@ -4,7 +4,8 @@
 //   first) -> update -> initiate from unused measurements -> M-of-N
 //   confirmation and deletion -> reports.
 // Work is bounded by the capacities: kMaxTracks x kMaxMeasurements
-// innovations per frame at most, no allocation, no recursion.
+// innovations per frame at most, no allocation, no recursion. The per-track
+// passes visit the active slots only (TrackTable::active_slots()).
 // A frame that fails validation (count over capacity, NaN/Inf, out of the
 // configured measurement box, time going backwards) is refused with its
 // status before anything changes, so nothing already tracked is lost.
@@ -159,8 +160,7 @@ class Tracker {
   }
 
   void predict_all(std::int64_t t_us, bool (&existed)[kMaxTracks]) {
-    for (std::size_t i = 0; i < kMaxTracks; ++i) {
-      if (!table_.active(i)) continue;
+    for (const std::size_t i : table_.active_slots()) {
       existed[i] = true;
       TrackT& tr = table_[i];
       tr.associated = false;
@@ -179,8 +179,8 @@ class Tracker {
   /// order for a table that only grows, so older tracks choose first.
   void associate(const Scan& scan, TrackStatus status, const EllipsoidalGate<Scalar, kMeasDim>& gate,
                  bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
-    for (std::size_t i = 0; i < kMaxTracks; ++i) {
-      if (!table_.active(i) || table_[i].status != status || !table_[i].initialised) continue;
+    for (const std::size_t i : table_.active_slots()) {
+      if (table_[i].status != status || !table_[i].initialised) continue;
       TrackT& tr = table_[i];
       if (tr.t_us != scan.t_us) continue;  // prediction failed this frame
       std::size_t best = kMaxMeasurements;
@@ -219,8 +219,8 @@ class Tracker {
   /// A seed pairs with the unused measurement of lowest pairing cost.
   void initiate_from_seeds(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
     if constexpr (!Initiator::kSinglePoint) {
-      for (std::size_t i = 0; i < kMaxTracks; ++i) {
-        if (!table_.active(i) || table_[i].initialised) continue;
+      for (const std::size_t i : table_.active_slots()) {
+        if (table_[i].initialised) continue;
         TrackT& tr = table_[i];
         const Scalar dt = seconds(scan.t_us - tr.t_us);
         std::size_t best = kMaxMeasurements;
@@ -319,8 +319,7 @@ class Tracker {
   void manage(const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks]) {
     const std::uint8_t window =
         static_cast<std::uint8_t>(config_.confirm_n >= 8 ? 0xFFu : (1u << config_.confirm_n) - 1u);
-    for (std::size_t i = 0; i < kMaxTracks; ++i) {
-      if (!table_.active(i)) continue;
+    for (const std::size_t i : table_.active_slots()) {  // releases only slot i
       TrackT& tr = table_[i];
       if (existed[i]) {
         tr.history = static_cast<std::uint8_t>((tr.history << 1) | (hit[i] ? 1u : 0u));
@@ -366,8 +365,8 @@ class Tracker {
   }
 
   void build_reports(std::int64_t t_us) {
-    for (std::size_t i = 0; i < kMaxTracks; ++i) {
-      if (!table_.active(i) || !table_[i].initialised) continue;
+    for (const std::size_t i : table_.active_slots()) {
+      if (!table_[i].initialised) continue;
       const TrackT& tr = table_[i];
       if (tr.status != TrackStatus::kConfirmed && !config_.report_tentative) continue;
       Report& r = reports_[report_count_++];
