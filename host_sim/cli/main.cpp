@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/cmd_montecarlo.hpp"
 #include "cli/cmd_pcl.hpp"
 #include "cli/cmd_r2aekf.hpp"
 #include "cli/cmd_scalars.hpp"
@@ -101,6 +102,12 @@ int main(int argc, char** argv) {
   ScalarsOptions scalars;
   CLI::App* scalars_cmd = add_scalars_command(app, scalars);
 
+  MonteCarloOptions montecarlo;
+  MergeOptions merge;
+  CLI::App* montecarlo_cmd = nullptr;
+  CLI::App* merge_cmd = nullptr;
+  add_montecarlo_commands(app, montecarlo, merge, montecarlo_cmd, merge_cmd);
+
   CLI11_PARSE(app, argc, argv);
 
   try {
@@ -115,6 +122,8 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
     if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
+    if (app.got_subcommand(montecarlo_cmd)) return cmd_montecarlo(montecarlo);
+    if (app.got_subcommand(merge_cmd)) return cmd_merge(merge);
     if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);
     if (app.got_subcommand(uw_cmd)) return cmd_uw(uw);
     if (app.got_subcommand(scalars_cmd)) return cmd_scalars(scalars);

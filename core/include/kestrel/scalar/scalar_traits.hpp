@@ -35,7 +35,12 @@ struct FloatingScalarTraits {
   static F abs(F v) { return std::fabs(v); }
   static F max_value() { return std::numeric_limits<F>::max(); }
   /// (-pi, pi]: std::remainder gives [-pi, pi] with no loop; map -pi to +pi.
+  /// Fast path: an angle already in (-pi, pi] is returned as is, which is
+  /// exactly what remainder() returns for it (|a| <= 2pi/2 gives quotient 0),
+  /// so the bits are unchanged; it skips a slow libm call in the common case
+  /// (every residual of a CRPF particle goes through here).
   static F wrap_angle(F a) {
+    if (a > -pi() && a <= pi()) return a;
     const F r = std::remainder(a, static_cast<F>(2.0 * 3.14159265358979323846));
     return r <= -pi() ? r + static_cast<F>(2.0 * 3.14159265358979323846) : r;
   }

@@ -1,0 +1,391 @@
+// Cost-reference particle filter (SPEC section 5; paper 001 section 3.4,
+// eq. 4-8 and table 6, after Miguez, Bugallo and Djuric 2004, "A new class
+// of particle filters for random dynamic systems with unknown statistics",
+// EURASIP JASP 2004:15, and Xu 2006). It needs scales, not noise
+// distributions: particles carry a cost instead of a likelihood weight.
+// Particle count kParticles is a template parameter; the filter owns a
+// seeded PRNG (math/prng.hpp) so the same seed gives the same bits.
+//
+// One step t with measurement y_t (predict(dt) then update(z)):
+//   1. noise-free prediction  xp_i = f(x_(t-1)^i, dt)                  (predict)
+//   2. risk  R_i = lambda C_(t-1)^i + dC(xp_i | y_t)                     (eq. 6)
+//      dC(x | y) = sum_c (residual_c(y, h(x)) / s_c)^2, s_c = sqrt(R_cc):
+//      the channels are normalised by their tuned scales (SPEC 5: without
+//      it the bearing term vanishes next to range in metres).
+//   3. selection PMF  pi_i ∝ (R_i - min R + delta)^(-beta)                (eq. 8)
+//   4. systematic resampling by pi (Kitagawa 1996): one uniform offset,
+//      N equally spaced pointers, one pass over the cumulative sum, so the
+//      work is exactly N + N steps whatever the PMF (bounded).
+//   5. propagation  x_t^i = xp_(j_i) + G a_i, a_i ~ N(0, sj^2 I): an
+//      acceleration kick (SPEC 5; default sj = 2 m/s^2) when the motion model
+//      offers noise_gain(dt) (CV-2D does); otherwise x_t^i = xp_(j_i) + L w_i,
+//      w_i ~ N(0, I), L L^T = Q(dt) of the filter's motion model.
+//   6. cost  C_t^i = lambda C_(t-1)^(j_i) + dC(x_t^i | y_t)              (eq. 5)
+//   7. estimate  x_hat = sum_i w_i x_t^i with w_i ∝ (C_t^i - min C_t + delta)^(-beta),
+//      i.e. weighted by the updated cost, not by the risk; P is the weighted
+//      sample covariance of the cloud.
+// Initial cloud: x_0^i ~ N(x0, P0) (semidefinite Cholesky of P0), C_0^i = 0.
+//
+// Choices beyond the paper (docs/filters.md): beta is an integer (1..8), so
+// the PMF needs no pow(); several predict() calls without an update add up
+// their dt (one kick for the whole interval); innovation() is linearised at
+// the cloud's mean (H P H^T + R) because the gate needs a covariance, which
+// a cost-based filter does not define; update(z, R) takes the scales from
+// diag(R). There is no predict(dt, Q): the kick is the CRPF's process noise.
+//
+// Commit-on-success: update() writes into the second particle buffer and
+// swaps only when every new particle and cost is finite; the PRNG state is
+// restored on failure. Statuses: kNonFinite, kNotPositiveDefinite (a scale
+// <= 0 in R, or a P0 that is indefinite at reset).
+#pragma once
+
+#include <concepts>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+
+#include "kestrel/assert.hpp"
+#include "kestrel/filters/innovation.hpp"
+#include "kestrel/math/cholesky_update.hpp"
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/math/prng.hpp"
+#include "kestrel/models/concepts.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
+
+namespace kestrel {
+
+/// CRPF tuning (SPEC 5 defaults).
+template <class S>
+struct CrpfParams {
+  S lambda = lit<S>(0.8);      ///< Forgetting factor of the cost, (0, 1].
+  int beta = 2;                ///< PMF exponent, integer 1..8.
+  S delta = S(1);              ///< PMF offset, normalised-cost units (> 0).
+  S kick_sigma = S(2);         ///< sj, sigma of the acceleration kick, m/s^2 (models with noise_gain()).
+  std::uint64_t seed = 0;      ///< PRNG seed.
+};
+
+/// A motion model that says how a unit noise input enters the state.
+template <class M>
+concept HasNoiseGain = requires(const M& m, typename M::Scalar dt) {
+  { m.noise_gain(dt) };
+};
+
+namespace detail {
+template <class Motion>
+constexpr int kick_dim() {
+  if constexpr (HasNoiseGain<Motion>) {
+    return decltype(std::declval<const Motion&>().noise_gain(typename Motion::Scalar{}))::ColsAtCompileTime;
+  } else {
+    return Motion::kStateDim;
+  }
+}
+}  // namespace detail
+
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement, int kParticles>
+class Crpf {
+ public:
+  static_assert(kParticles >= 2, "a particle filter needs at least two particles");
+  using Scalar = typename Motion::Scalar;
+  static constexpr int kStateDim = Motion::kStateDim;
+  static constexpr int kMeasDim = Measurement::kMeasDim;
+  static constexpr int kParticleCount = kParticles;
+  static constexpr int kKickDim = detail::kick_dim<Motion>();
+  static constexpr int kMaxBeta = 8;
+  using MotionModel = Motion;
+  using MeasurementModel = Measurement;
+  using Layout = typename Motion::Layout;
+  using State = typename Motion::State;
+  using Cov = typename Motion::Cov;
+  using MeasVec = typename Measurement::Measurement;
+  using MeasCov = typename Measurement::NoiseCov;
+  using Innov = Innovation<Scalar, kMeasDim>;
+  using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
+  using Params = CrpfParams<Scalar>;
+  using KickFactor = Mat<Scalar, kStateDim, kKickDim>;
+
+  Crpf() : Crpf(Motion{}, Measurement{}) {}
+  Crpf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+      : motion_(motion), measurement_(measurement), params_(params), normal_(params.seed) {
+    KESTREL_ASSERT(params.beta >= 1 && params.beta <= kMaxBeta);
+    KESTREL_ASSERT(params.delta > Scalar(0));
+    x_hat_ = State::Zero();
+    P_ = Cov::Identity();
+    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
+    for (int i = 0; i < kParticles; ++i) {
+      xs_[0][i] = State::Zero();
+      xs_[1][i] = State::Zero();
+      xp_[i] = State::Zero();
+      cost_[0][i] = Scalar(0);
+      cost_[1][i] = Scalar(0);
+      w_[i] = Scalar(1) / Scalar(kParticles);
+      cum_[i] = Scalar(0);
+    }
+  }
+
+  /// Restart the PRNG stream (e.g. one seed per Monte Carlo run).
+  void seed(std::uint64_t seed) {
+    params_.seed = seed;
+    normal_.seed(seed);
+  }
+
+  /// Draw the initial cloud x_i ~ N(x, P) with zero costs.
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (P indefinite). Unchanged on error.
+  [[nodiscard]] Status reset(const State& x, const Cov& P) {
+    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    Cov L;
+    const Status st = cholesky_semidefinite<Scalar, kStateDim>(symmetrised(P), L);
+    if (st != Status::kOk) return st;
+    State* next = xs_[1 - cur_];
+    for (int i = 0; i < kParticles; ++i) {
+      State w;
+      for (int k = 0; k < kStateDim; ++k) w(k) = normal_();
+      next[i] = x + L * w;
+    }
+    cur_ = 1 - cur_;
+    for (int i = 0; i < kParticles; ++i) {
+      cost_[cost_cur_][i] = Scalar(0);
+      w_[i] = Scalar(1) / Scalar(kParticles);
+    }
+    pending_dt_ = Scalar(0);
+    predicted_ = false;
+    estimate(xs_[cur_], KickFactor::Zero());
+    return Status::kOk;
+  }
+
+  /// Noise-free prediction of every particle over dt seconds (accumulated
+  /// with any earlier predict() not yet followed by an update()); x() and
+  /// P() become the predicted cloud's mean and covariance plus the kick's.
+  /// @return kOk; kNonFinite (filter unchanged).
+  [[nodiscard]] Status predict(Scalar dt) {
+    if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
+    const Scalar total_dt = pending_dt_ + dt;
+    const KickFactor L = kick_factor(total_dt);
+    if (!all_finite(L)) return Status::kNonFinite;
+    const State* x = xs_[cur_];
+    for (int i = 0; i < kParticles; ++i) xp_[i] = motion_.propagate(x[i], total_dt);
+    pending_dt_ = total_dt;
+    predicted_ = true;
+    estimate(xp_, L);
+    return Status::kOk;
+  }
+
+  /// Innovation of z against the current estimate, linearised at x() with
+  /// the model's R (see the header note). Pure.
+  Innov innovation(const MeasVec& z) const { return innovation(z, measurement_.noise()); }
+
+  /// Innovation with an explicit R.
+  Innov innovation(const MeasVec& z, const MeasCov& R) const {
+    Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};
+    if (!all_finite(z) || !all_finite(R)) {
+      out.status = Status::kNonFinite;
+      return out;
+    }
+    const auto H = measurement_.jacobian(x_hat_);
+    out.nu = measurement_.residual(z, measurement_.predict(x_hat_));
+    out.S = symmetrised(H * P_ * H.transpose() + R);
+    if (!all_finite(H) || !all_finite(out.nu) || !all_finite(out.S)) {
+      out.status = Status::kNonFinite;
+      return out;
+    }
+    const Eigen::LLT<MeasCov> llt(out.S);
+    if (llt.info() != Eigen::Success) {
+      out.status = Status::kNotPositiveDefinite;
+      return out;
+    }
+    out.d2 = out.nu.dot(llt.solve(out.nu));
+    return out;
+  }
+
+  /// One CRPF step with z: risk, selection, propagation, cost, estimate.
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z) { return update(z, measurement_.noise()); }
+
+  /// Update with the channel scales s_c = sqrt(R_cc) of an explicit R.
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
+    using T = ScalarTraits<Scalar>;
+    diag_.fused = false;
+    if (!all_finite(z) || !all_finite(R)) return fail(Status::kNonFinite);
+    MeasVec inv_scale;
+    for (int c = 0; c < kMeasDim; ++c) {
+      if (!(R(c, c) > Scalar(0))) return fail(Status::kNotPositiveDefinite);
+      inv_scale(c) = Scalar(1) / T::sqrt(R(c, c));
+    }
+    if (!predicted_) {
+      // Update without a predict: dt = 0, the prediction is the cloud itself.
+      const Status st = predict(Scalar(0));
+      if (st != Status::kOk) return fail(st);
+    }
+    const Innov in = innovation(z, R);  // diagnostics: against the predicted estimate
+    const KickFactor L = kick_factor(pending_dt_);
+    const Scalar lambda = params_.lambda;
+    const Scalar* cost = cost_[cost_cur_];
+
+    // 2. Risk of every noise-free prediction; 3. selection PMF as a cumulative sum.
+    Scalar min_risk = T::max_value();
+    bool any_finite = false;
+    for (int i = 0; i < kParticles; ++i) {
+      const Scalar r = lambda * cost[i] + incremental_cost(xp_[i], z, inv_scale);
+      cum_[i] = r;
+      if (T::is_finite(r)) {
+        any_finite = true;
+        if (r < min_risk) min_risk = r;
+      }
+    }
+    if (!any_finite) return fail(Status::kNonFinite);
+    Scalar total = Scalar(0);
+    for (int i = 0; i < kParticles; ++i) {
+      const Scalar r = cum_[i];
+      total += T::is_finite(r) ? pmf(r - min_risk) : Scalar(0);
+      cum_[i] = total;
+    }
+
+    // 4. Systematic resampling, 5. propagation, 6. cost, into the spare buffer.
+    const NormalGenerator<Scalar> normal_before = normal_;
+    State* next = xs_[1 - cur_];
+    Scalar* next_cost = cost_[1 - cost_cur_];
+    const Scalar u0 = normal_.uniform01();
+    const Scalar step = total / Scalar(kParticles);
+    int j = 0;
+    for (int i = 0; i < kParticles; ++i) {
+      const Scalar target = (u0 + Scalar(i)) * step;
+      while (j < kParticles - 1 && cum_[j] <= target) ++j;  // j only grows: N steps in all
+      Vec<Scalar, kKickDim> a;
+      for (int k = 0; k < kKickDim; ++k) a(k) = normal_();
+      next[i] = xp_[j] + L * a;
+      next_cost[i] = lambda * cost[j] + incremental_cost(next[i], z, inv_scale);
+    }
+
+    // 7. Estimate weighted by the updated cost (weights into the scratch
+    // array until the commit). A non-finite particle or cost makes the
+    // estimate non-finite (every weight is > 0), so one check covers them.
+    Scalar min_cost = T::max_value();
+    for (int i = 0; i < kParticles; ++i) {
+      if (next_cost[i] < min_cost) min_cost = next_cost[i];
+    }
+    Scalar wsum = Scalar(0);
+    for (int i = 0; i < kParticles; ++i) {
+      cum_[i] = pmf(next_cost[i] - min_cost);
+      wsum += cum_[i];
+    }
+    const Scalar inv_wsum = Scalar(1) / wsum;
+    for (int i = 0; i < kParticles; ++i) cum_[i] *= inv_wsum;
+    State x_hat;
+    Cov P;
+    moments(next, cum_, KickFactor::Zero(), x_hat, P);
+    if (!T::is_finite(min_cost) || !T::is_finite(wsum) || !all_finite(x_hat) || !all_finite(P)) {
+      normal_ = normal_before;
+      return fail(Status::kNonFinite);
+    }
+    for (int i = 0; i < kParticles; ++i) w_[i] = cum_[i];
+    x_hat_ = x_hat;
+    P_ = P;
+    cur_ = 1 - cur_;
+    cost_cur_ = 1 - cost_cur_;
+    pending_dt_ = Scalar(0);
+    predicted_ = false;
+
+    diag_.innovation = in.nu;
+    diag_.innovation_variance = in.S.diagonal();
+    diag_.nis = in.d2;
+    diag_.fused = true;
+    diag_.status = Status::kOk;
+    return Status::kOk;
+  }
+
+  /// Weighted mean of the cloud (after update: by the updated cost).
+  const State& x() const { return x_hat_; }
+  /// Weighted covariance of the cloud (after predict: plus the kick's).
+  const Cov& P() const { return P_; }
+  /// Particle i of the current cloud (after the last update or reset).
+  const State& particle(int i) const { return xs_[cur_][i]; }
+  /// Cost C_t of particle i.
+  Scalar cost(int i) const { return cost_[cost_cur_][i]; }
+  /// Normalised estimation weight of particle i.
+  Scalar weight(int i) const { return w_[i]; }
+  const Motion& motion() const { return motion_; }
+  const Measurement& measurement() const { return measurement_; }
+  Motion& motion() { return motion_; }
+  Measurement& measurement() { return measurement_; }
+  const Params& params() const { return params_; }
+  /// Diagnostics of the last update attempt (innovation linearised, see above).
+  const Diagnostics& diagnostics() const { return diag_; }
+
+ private:
+  /// dC(x | z) = sum_c (residual_c(z, h(x)) / s_c)^2.
+  Scalar incremental_cost(const State& x, const MeasVec& z, const MeasVec& inv_scale) const {
+    const MeasVec e = measurement_.residual(z, measurement_.predict(x)).cwiseProduct(inv_scale);
+    return e.squaredNorm();
+  }
+
+  /// (d + delta)^(-beta) for d >= 0, integer beta (bounded loop).
+  Scalar pmf(Scalar d) const {
+    const Scalar base = d + params_.delta;
+    Scalar p = base;
+    for (int k = 1; k < kMaxBeta; ++k) {
+      if (k >= params_.beta) break;
+      p *= base;
+    }
+    return Scalar(1) / p;
+  }
+
+  /// Square root of the kick covariance over dt (see the header note).
+  KickFactor kick_factor(Scalar dt) const {
+    if constexpr (HasNoiseGain<Motion>) {
+      return motion_.noise_gain(dt) * params_.kick_sigma;
+    } else {
+      Cov L;
+      if (cholesky_semidefinite<Scalar, kStateDim>(motion_.process_noise(dt), L) != Status::kOk) {
+        L.setConstant(ScalarTraits<Scalar>::max_value() * Scalar(2));  // caught by all_finite
+      }
+      return L;
+    }
+  }
+
+  /// m = sum w_i x_i, P = sum w_i (x_i - m)(x_i - m)^T + L L^T (weights sum
+  /// to 1). One pass about the reference x_0 (a member of the cloud, so the
+  /// shifted sums lose no significant digits); P is symmetrised.
+  void moments(const State* x, const Scalar* w, const KickFactor& L, State& m, Cov& P) const {
+    const State ref = x[0];
+    State s1 = State::Zero();
+    Cov s2 = Cov::Zero();
+    for (int i = 0; i < kParticles; ++i) {
+      const State d = x[i] - ref;
+      const State wd = d * w[i];
+      s1 += wd;
+      s2.noalias() += wd * d.transpose();
+    }
+    P = symmetrised(s2 - s1 * s1.transpose() + L * L.transpose());
+    m = ref + s1;
+  }
+
+  /// x_hat_, P_ from cloud x with the current weights w_.
+  void estimate(const State* x, const KickFactor& L) { moments(x, w_, L, x_hat_, P_); }
+
+  Status fail(Status s) {
+    diag_.status = s;
+    return s;
+  }
+
+  Motion motion_;
+  Measurement measurement_;
+  Params params_;
+  NormalGenerator<Scalar> normal_;
+  static constexpr std::size_t kSize = static_cast<std::size_t>(kParticles);
+  State xs_[2][kSize];   ///< Double-buffered cloud; xs_[cur_] is current.
+  State xp_[kSize];      ///< Noise-free predictions f(x_i, pending_dt_).
+  Scalar cost_[2][kSize];
+  Scalar w_[kSize];      ///< Estimation weights of the current cloud.
+  Scalar cum_[kSize];    ///< Risks, then their cumulative PMF.
+  int cur_ = 0;
+  int cost_cur_ = 0;
+  Scalar pending_dt_ = Scalar(0);
+  bool predicted_ = false;
+  State x_hat_;
+  Cov P_;
+  Diagnostics diag_;
+};
+
+}  // namespace kestrel

@@ -1,0 +1,212 @@
+// Sigma points, their weights and their statistics, shared by the UKF, CDKF,
+// SR-UKF and SR-CDKF (SPEC section 5; paper 001 section 3.2-3.3 and tables
+// 2-5, which follow van der Merwe 2004, "Sigma-point Kalman filters for
+// probabilistic inference in dynamic state-space models", PhD thesis, OGI,
+// sections 3.2-3.4 and algorithms 8-11).
+//
+// One symmetric set of 2n + 1 points for both families (compile-time count):
+//   X_0 = x,  X_i = x + c L_i,  X_(n+i) = x - c L_i  (i = 1..n),
+// with L a lower-triangular square root of P (P = L L^T) and c the spread:
+// c = sqrt(n + lambda) for the scaled unscented transform
+// (lambda = alpha^2 (n + kappa) - n) and c = h for the central difference
+// (Stirling) interpolation.
+//
+// Angles. A mean over points whose bearings straddle +-pi must not be the
+// plain weighted sum (two points at +179 and -179 deg average to 0). Every
+// mean here is taken in reference form,
+//   z_bar = Z_0 + sum_(i>=1) w_i residual(Z_i, Z_0),
+// which equals sum_i w_i Z_i because the weights sum to one, and every
+// deviation goes through the model's residual(), so the one place that wraps
+// a bearing (the measurement model's residual) also makes sigma-point means
+// and covariances wrap-safe; no model needs an extra hook. A model without
+// angles has residual(z, zh) = z - zh, which inlines to the same arithmetic
+// as a plain weighted sum written about X_0, so it pays nothing. z_bar may
+// fall just outside (-pi, pi]; nothing uses it except through residual().
+// States are assumed to hold no angle (true of CA-2D, CV-2D, CV-3D, CT-2D):
+// their deviations are plain differences.
+#pragma once
+
+#include "kestrel/assert.hpp"
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+
+namespace kestrel {
+
+/// Number of points of a symmetric sigma-point set in n dimensions.
+template <int kN>
+inline constexpr int kSigmaPointCount = 2 * kN + 1;
+
+/// Scaled unscented transform parameters (Julier 2002; van der Merwe 2004
+/// eq. 3.11-3.12). SPEC 5 defaults: alpha = 1, beta = 2 (optimal for a
+/// Gaussian prior), kappa = 3 - n.
+template <class S, int kN>
+struct UnscentedParams {
+  S alpha = S(1);       ///< Spread of the points around the mean, (0, 1].
+  S beta = S(2);        ///< Prior knowledge of the distribution (2: Gaussian).
+  S kappa = S(3 - kN);  ///< Secondary scaling; 3 - n matches the 4th moment of a Gaussian.
+};
+
+/// Weights of the scaled unscented transform:
+/// lambda = alpha^2 (n + kappa) - n, spread = sqrt(n + lambda),
+/// Wm_0 = lambda / (n + lambda), Wc_0 = Wm_0 + 1 - alpha^2 + beta,
+/// W_i = 1 / (2 (n + lambda)) for i >= 1 (mean and covariance alike).
+template <class S, int kN>
+struct UnscentedWeights {
+  S spread{};   ///< sqrt(n + lambda).
+  S wm0{};      ///< Mean weight of X_0 (negative for n > 3 with the defaults).
+  S wc0{};      ///< Covariance weight of X_0.
+  S wi{};       ///< Weight of X_1 .. X_2n (positive).
+  S sqrt_wi{};  ///< sqrt(W_i), the column scale of the SR-UKF compound matrix.
+
+  static UnscentedWeights from(const UnscentedParams<S, kN>& p) {
+    using T = ScalarTraits<S>;
+    const S n = S(kN);
+    const S n_lambda = p.alpha * p.alpha * (n + p.kappa);  // n + lambda
+    KESTREL_ASSERT(n_lambda > S(0));  // programmer error: alpha^2 (n + kappa) must be > 0
+    UnscentedWeights w;
+    w.spread = T::sqrt(n_lambda);
+    w.wm0 = (n_lambda - n) / n_lambda;
+    w.wc0 = w.wm0 + S(1) - p.alpha * p.alpha + p.beta;
+    w.wi = S(1) / (S(2) * n_lambda);
+    w.sqrt_wi = T::sqrt(w.wi);
+    return w;
+  }
+};
+
+/// Central difference (Stirling interpolation) parameter (Norgaard, Poulsen,
+/// Ravn 2000; van der Merwe 2004 section 3.4.1): h^2 = 3 is optimal for a
+/// Gaussian prior (it matches the fourth moment). SPEC 5: h = sqrt(3).
+template <class S>
+struct CentralDifferenceParams {
+  S h = lit<S>(1.7320508075688772935);  ///< Half-width of the central difference, h >= 1.
+};
+
+/// Weights of the CDKF (van der Merwe 2004 eq. 3.85-3.88):
+/// Wm_0 = (h^2 - n) / h^2, Wm_i = 1 / (2 h^2),
+/// Wc1 = 1 / (4 h^2), Wc2 = (h^2 - 1) / (4 h^4).
+template <class S, int kN>
+struct CentralDifferenceWeights {
+  S spread{};    ///< h.
+  S wm0{};       ///< Mean weight of X_0.
+  S wi{};        ///< Mean weight of X_1 .. X_2n.
+  S wc1{};       ///< Weight of the first-order terms (X_i - X_(n+i)).
+  S wc2{};       ///< Weight of the second-order terms (X_i + X_(n+i) - 2 X_0).
+  S sqrt_wc1{};  ///< sqrt(Wc1) = 1 / (2h).
+  S sqrt_wc2{};  ///< sqrt(Wc2) = sqrt(h^2 - 1) / (2 h^2).
+
+  static CentralDifferenceWeights from(const CentralDifferenceParams<S>& p) {
+    using T = ScalarTraits<S>;
+    KESTREL_ASSERT(p.h >= S(1));  // programmer error: Wc2 must be >= 0
+    const S h2 = p.h * p.h;
+    CentralDifferenceWeights w;
+    w.spread = p.h;
+    w.wm0 = (h2 - S(kN)) / h2;
+    w.wi = S(1) / (S(2) * h2);
+    w.wc1 = S(1) / (S(4) * h2);
+    w.wc2 = (h2 - S(1)) / (S(4) * h2 * h2);
+    w.sqrt_wc1 = T::sqrt(w.wc1);
+    w.sqrt_wc2 = T::sqrt(w.wc2);
+    return w;
+  }
+};
+
+namespace sigma {
+
+template <class S, int kN>
+using Points = Mat<S, kN, kSigmaPointCount<kN>>;
+
+/// X = [x, x + c L, x - c L] (columns), L lower triangular with P = L L^T.
+template <class S, int kN>
+Points<S, kN> draw(const Vec<S, kN>& x, const Mat<S, kN, kN>& L, S spread) {
+  Points<S, kN> X;
+  X.col(0) = x;
+  for (int i = 0; i < kN; ++i) {
+    const Vec<S, kN> d = L.col(i) * spread;
+    X.col(1 + i) = x + d;
+    X.col(1 + kN + i) = x - d;
+  }
+  return X;
+}
+
+/// Each point through the motion model: Y_i = f(X_i, dt).
+template <class Motion>
+Points<typename Motion::Scalar, Motion::kStateDim> propagate(
+    const Motion& motion, const Points<typename Motion::Scalar, Motion::kStateDim>& X,
+    typename Motion::Scalar dt) {
+  Points<typename Motion::Scalar, Motion::kStateDim> Y;
+  for (int i = 0; i < kSigmaPointCount<Motion::kStateDim>; ++i) {
+    Y.col(i) = motion.propagate(X.col(i), dt);
+  }
+  return Y;
+}
+
+/// Each point through the measurement model: Z_i = h(X_i).
+template <class Measurement>
+Mat<typename Measurement::Scalar, Measurement::kMeasDim, kSigmaPointCount<Measurement::kStateDim>> measure(
+    const Measurement& measurement,
+    const Points<typename Measurement::Scalar, Measurement::kStateDim>& X) {
+  Mat<typename Measurement::Scalar, Measurement::kMeasDim, kSigmaPointCount<Measurement::kStateDim>> Z;
+  for (int i = 0; i < kSigmaPointCount<Measurement::kStateDim>; ++i) {
+    Z.col(i) = measurement.predict(X.col(i));
+  }
+  return Z;
+}
+
+/// Weighted state mean in reference form X_0 + w_i sum (X_i - X_0) (equal to
+/// sum_i w_i X_i since the weights sum to one; better conditioned when W_0
+/// is negative and the state is far from the origin).
+template <class S, int kN, int kL>
+Vec<S, kN> state_mean(const Mat<S, kN, kL>& X, S wi) {
+  Vec<S, kN> acc = Vec<S, kN>::Zero();
+  for (int i = 1; i < kL; ++i) acc += X.col(i) - X.col(0);
+  return X.col(0) + acc * wi;
+}
+
+/// Weighted measurement mean Z_0 + w_i sum residual(Z_i, Z_0): wrap-safe for
+/// any channel the model's residual() wraps (see the header note).
+template <class Measurement, class S, int kM, int kL>
+Vec<S, kM> measurement_mean(const Measurement& measurement, const Mat<S, kM, kL>& Z, S wi) {
+  Vec<S, kM> acc = Vec<S, kM>::Zero();
+  const Vec<S, kM> z0 = Z.col(0);
+  for (int i = 1; i < kL; ++i) acc += measurement.residual(Z.col(i), z0);
+  return z0 + acc * wi;
+}
+
+/// Deviations of every point from a reference: D_i = residual(Z_i, z_ref).
+template <class Measurement, class S, int kM, int kL>
+Mat<S, kM, kL> measurement_deviations(const Measurement& measurement, const Mat<S, kM, kL>& Z,
+                                      const Vec<S, kM>& z_ref) {
+  Mat<S, kM, kL> D;
+  for (int i = 0; i < kL; ++i) D.col(i) = measurement.residual(Z.col(i), z_ref);
+  return D;
+}
+
+/// Central-difference terms of a point set (van der Merwe 2004 eq. 3.90-3.91):
+/// first-order D1_i = Y_i - Y_(n+i) and second-order
+/// D2_i = (Y_i - Y_0) + (Y_(n+i) - Y_0), i = 1..n, with `diff(a, b)` the
+/// space's difference (a - b for states, residual() for measurements).
+template <int kN, class S, int kM, class Diff>
+void central_differences(const Mat<S, kM, kSigmaPointCount<kN>>& Y, Diff diff, Mat<S, kM, kN>& D1,
+                         Mat<S, kM, kN>& D2) {
+  const Vec<S, kM> y0 = Y.col(0);
+  for (int i = 0; i < kN; ++i) {
+    const Vec<S, kM> yp = Y.col(1 + i);
+    const Vec<S, kM> ym = Y.col(1 + kN + i);
+    D1.col(i) = diff(yp, ym);
+    D2.col(i) = diff(yp, y0) + diff(ym, y0);
+  }
+}
+
+/// Kalman gain K = Pxz S^-1, computed as (S^-1 Pxz^T)^T (S symmetric) from
+/// S's Cholesky factor, one column of Pxz^T at a time: a matrix right-hand
+/// side sends Eigen to its blocked triangular solver, which may allocate
+/// (the same reason as in ekf.hpp); the fixed-size vector solve does not.
+template <class S, int kN, int kM>
+Mat<S, kN, kM> gain(const Eigen::LLT<Mat<S, kM, kM>>& llt_S, const Mat<S, kN, kM>& Pxz) {
+  Mat<S, kM, kN> SinvPzx;
+  for (int c = 0; c < kN; ++c) SinvPzx.col(c) = llt_S.solve(Pxz.row(c).transpose());
+  return SinvPzx.transpose();
+}
+
+}  // namespace sigma
+}  // namespace kestrel

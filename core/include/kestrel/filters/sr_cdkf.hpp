@@ -1,0 +1,216 @@
+// Square-root central difference Kalman filter (SPEC section 5; paper 001
+// section 3.3 and table 5, which is van der Merwe 2004 algorithm 11,
+// additive noise). Carries the lower-triangular factor Sx (P = Sx Sx^T);
+// same points and weights as the CDKF (filters/cdkf.hpp) and in exact
+// arithmetic the same estimates (tested to 1e-9 relative in double). All
+// CDKF weights are positive, so the time update needs no rank-1 update.
+//
+// predict(dt, Q):  X = [x, x +- h Sx], Y_i = f(X_i, dt), x- = sum Wm_i Y_i,
+//   Sx- = qr{ [sqrt(Wc1) (Y_(1..n) - Y_(n+1..2n)),
+//              sqrt(Wc2) (Y_(1..n) + Y_(n+1..2n) - 2 Y_0), sqrt(Q)] }.
+// update(z, R):    points redrawn from (x-, Sx-), Z_i = h(X_i), z- = mean,
+//   Sy = qr{ [sqrt(Wc1) (Z_(1..n) - Z_(n+1..2n)),
+//             sqrt(Wc2) (Z_(1..n) + Z_(n+1..2n) - 2 Z_0), sqrt(R)] },
+//   Pxz = sqrt(Wc1) Sx- [Z_(1..n) - Z_(n+1..2n)]^T, K = (Pxz / Sy^T) / Sy,
+//   x+ = x- + K residual(z, z-), Sx+ = cholupdate(Sx-, K Sy, -1).
+// Measurement differences go through residual() (filters/sigma_points.hpp).
+//
+// Commit-on-success: kNonFinite; kNotPositiveDefinite when the downdate
+// would lose positive definiteness, Q or R is indefinite, or Sy is singular;
+// x and Sx unchanged on error.
+#pragma once
+
+#include "kestrel/filters/innovation.hpp"
+#include "kestrel/filters/sigma_points.hpp"
+#include "kestrel/math/cholesky_update.hpp"
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/math/triangular.hpp"
+#include "kestrel/models/concepts.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
+
+namespace kestrel {
+
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+class SrCdkf {
+ public:
+  using Scalar = typename Motion::Scalar;
+  static constexpr int kStateDim = Motion::kStateDim;
+  static constexpr int kMeasDim = Measurement::kMeasDim;
+  static constexpr int kSigmaCount = kSigmaPointCount<kStateDim>;
+  using MotionModel = Motion;
+  using MeasurementModel = Measurement;
+  using Layout = typename Motion::Layout;
+  using State = typename Motion::State;
+  using Cov = typename Motion::Cov;
+  using MeasVec = typename Measurement::Measurement;
+  using MeasCov = typename Measurement::NoiseCov;
+  using Innov = Innovation<Scalar, kMeasDim>;
+  using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
+  using Params = CentralDifferenceParams<Scalar>;
+  using Weights = CentralDifferenceWeights<Scalar, kStateDim>;
+
+  SrCdkf() : SrCdkf(Motion{}, Measurement{}) {}
+  SrCdkf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+      : motion_(motion),
+        measurement_(measurement),
+        params_(params),
+        w_(Weights::from(params)),
+        x_(State::Zero()),
+        Sx_(Cov::Identity()),
+        P_(Cov::Identity()) {
+    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
+  }
+
+  /// Set the state and covariance (factorised once here).
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
+  [[nodiscard]] Status reset(const State& x, const Cov& P) {
+    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    const Eigen::LLT<Cov> llt(symmetrised(P));
+    if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+    commit(x, llt.matrixL());
+    return Status::kOk;
+  }
+
+  /// Predict by dt seconds with the model's process noise Q(dt).
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
+  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+
+  /// Predict by dt seconds with an explicit process noise Q.
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
+  [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
+    if (!ScalarTraits<Scalar>::is_finite(dt) || !all_finite(Q)) return Status::kNonFinite;
+    Cov Sq;
+    const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
+    if (sq != Status::kOk) return sq;
+    const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
+    const auto Y = sigma::propagate(motion_, X, dt);
+    const State x = sigma::state_mean(Y, w_.wi);
+    Mat<Scalar, kStateDim, kStateDim> D1, D2;
+    sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
+                                          D1, D2);
+    Mat<Scalar, kStateDim, 3 * kStateDim> A;
+    A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
+    A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
+    A.template rightCols<kStateDim>() = Sq;
+    const Cov S = triangularise(A);
+    if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
+    commit(x, S);
+    return Status::kOk;
+  }
+
+  /// Innovation of z against the current (predicted) state with the model's R.
+  Innov innovation(const MeasVec& z) const { return innovation(z, measurement_.noise()); }
+
+  /// Innovation of z with an explicit measurement noise R (S = Sy Sy^T).
+  Innov innovation(const MeasVec& z, const MeasCov& R) const {
+    Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};
+    Moments m;
+    out.status = moments(z, R, m);
+    if (out.status != Status::kOk) return out;
+    out.nu = m.nu;
+    out.S = m.Sy * m.Sy.transpose();
+    out.d2 = solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm();
+    return out;
+  }
+
+  /// Update with z and the model's R.
+  /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z) { return update(z, measurement_.noise()); }
+
+  /// Update with z and an explicit R.
+  /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
+    diag_.fused = false;
+    Moments m;
+    const Status st = moments(z, R, m);
+    if (st != Status::kOk) return fail(st);
+    const Mat<Scalar, kMeasDim, kStateDim> Kt = solve_lower_transposed<Scalar, kMeasDim, kStateDim>(
+        m.Sy, solve_lower<Scalar, kMeasDim, kStateDim>(m.Sy, m.Pxz.transpose()));
+    const Mat<Scalar, kStateDim, kMeasDim> K = Kt.transpose();
+    const State x = x_ + K * m.nu;
+    Cov S = Sx_;
+    const Mat<Scalar, kStateDim, kMeasDim> U = K * m.Sy;
+    const Status down = cholesky_rank_update<Scalar, kStateDim, kMeasDim>(S, U, Scalar(-1));
+    if (down != Status::kOk) return fail(down);
+    if (!all_finite(x)) return fail(Status::kNonFinite);
+    commit(x, S);
+    diag_.innovation = m.nu;
+    diag_.innovation_variance = (m.Sy * m.Sy.transpose()).diagonal();
+    diag_.nis = solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm();
+    diag_.fused = true;
+    diag_.status = Status::kOk;
+    return Status::kOk;
+  }
+
+  const State& x() const { return x_; }
+  /// P = Sx Sx^T, formed once per committed step.
+  const Cov& P() const { return P_; }
+  /// Lower-triangular square root of P carried by the filter.
+  const Cov& sqrt_P() const { return Sx_; }
+  const Motion& motion() const { return motion_; }
+  const Measurement& measurement() const { return measurement_; }
+  Motion& motion() { return motion_; }
+  Measurement& measurement() { return measurement_; }
+  const Params& params() const { return params_; }
+  const Weights& weights() const { return w_; }
+  /// Diagnostics of the last update attempt.
+  const Diagnostics& diagnostics() const { return diag_; }
+
+ private:
+  struct Moments {
+    MeasVec nu;
+    MeasCov Sy;  ///< Lower-triangular square root of S.
+    Mat<Scalar, kStateDim, kMeasDim> Pxz;
+  };
+
+  Status moments(const MeasVec& z, const MeasCov& R, Moments& m) const {
+    if (!all_finite(z) || !all_finite(R)) return Status::kNonFinite;
+    MeasCov Sr;
+    const Status sr = cholesky_semidefinite<Scalar, kMeasDim>(symmetrised(R), Sr);
+    if (sr != Status::kOk) return sr;
+    const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
+    const auto Z = sigma::measure(measurement_, X);
+    const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
+    Mat<Scalar, kMeasDim, kStateDim> D1, D2;
+    const Measurement& h = measurement_;
+    sigma::central_differences<kStateDim>(
+        Z, [&h](const MeasVec& a, const MeasVec& b) -> MeasVec { return h.residual(a, b); }, D1, D2);
+    Mat<Scalar, kMeasDim, 2 * kStateDim + kMeasDim> A;
+    A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
+    A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
+    A.template rightCols<kMeasDim>() = Sr;
+    const MeasCov Sy = triangularise(A);
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (!(Sy(i, i) > Scalar(0))) return Status::kNotPositiveDefinite;
+    }
+    m.Sy = Sy;
+    m.Pxz = Sx_ * D1.transpose() * w_.sqrt_wc1;
+    m.nu = measurement_.residual(z, z_mean);
+    if (!all_finite(m.Sy) || !all_finite(m.Pxz) || !all_finite(m.nu)) return Status::kNonFinite;
+    return Status::kOk;
+  }
+
+  void commit(const State& x, const Cov& S) {
+    x_ = x;
+    Sx_ = S;
+    P_ = symmetrised(Sx_ * Sx_.transpose());
+  }
+
+  Status fail(Status s) {
+    diag_.status = s;
+    return s;
+  }
+
+  Motion motion_;
+  Measurement measurement_;
+  Params params_;
+  Weights w_;
+  State x_;
+  Cov Sx_;
+  Cov P_;
+  Diagnostics diag_;
+};
+
+}  // namespace kestrel

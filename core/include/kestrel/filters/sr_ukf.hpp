@@ -1,0 +1,219 @@
+// Square-root unscented Kalman filter (SPEC section 5; paper 001 section 3.3
+// and table 4, which is van der Merwe and Wan 2001 / van der Merwe 2004
+// algorithm 10, additive noise). It carries the lower-triangular factor
+// Sx (P = Sx Sx^T) instead of P, so no Cholesky factorisation is taken per
+// step; same weights and sigma points as the UKF (filters/ukf.hpp), and in
+// exact arithmetic the same estimates (tested to 1e-9 relative in double).
+//
+// predict(dt, Q):  X = [x, x +- c Sx], Y_i = f(X_i, dt), x- = sum Wm_i Y_i,
+//   Sx- = qr{ [sqrt(W_i) (Y_(1..2n) - x-), sqrt(Q)] },
+//   Sx- = cholupdate(Sx-, Y_0 - x-, Wc_0)  (a downdate if Wc_0 < 0).
+// update(z, R):    points redrawn from (x-, Sx-), Z_i = h(X_i), z- = mean,
+//   Sy = qr{ [sqrt(W_i) dZ_(1..2n), sqrt(R)] }, Sy = cholupdate(Sy, dZ_0, Wc_0),
+//   Pxz = sum Wc_i (X_i - x-) dZ_i^T, K = (Pxz / Sy^T) / Sy,
+//   x+ = x- + K residual(z, z-), Sx+ = cholupdate(Sx-, K Sy, -1)
+//   (a sequence of kMeasDim rank-1 downdates).
+// qr{} is Householder triangularisation (math/triangular.hpp); cholupdate is
+// math/cholesky_update.hpp (Eigen's LLT::rankUpdate allocates). sqrt(Q) and
+// sqrt(R) are semidefinite Cholesky factors (the DWNA Q of CV-2D is singular).
+//
+// Commit-on-success: kNonFinite; kNotPositiveDefinite when a downdate would
+// lose positive definiteness, Q or R is indefinite, or Sy is singular;
+// x and Sx unchanged on error.
+#pragma once
+
+#include "kestrel/filters/innovation.hpp"
+#include "kestrel/filters/sigma_points.hpp"
+#include "kestrel/math/cholesky_update.hpp"
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/math/triangular.hpp"
+#include "kestrel/models/concepts.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
+
+namespace kestrel {
+
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+class SrUkf {
+ public:
+  using Scalar = typename Motion::Scalar;
+  static constexpr int kStateDim = Motion::kStateDim;
+  static constexpr int kMeasDim = Measurement::kMeasDim;
+  static constexpr int kSigmaCount = kSigmaPointCount<kStateDim>;
+  using MotionModel = Motion;
+  using MeasurementModel = Measurement;
+  using Layout = typename Motion::Layout;
+  using State = typename Motion::State;
+  using Cov = typename Motion::Cov;
+  using MeasVec = typename Measurement::Measurement;
+  using MeasCov = typename Measurement::NoiseCov;
+  using Innov = Innovation<Scalar, kMeasDim>;
+  using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
+  using Params = UnscentedParams<Scalar, kStateDim>;
+  using Weights = UnscentedWeights<Scalar, kStateDim>;
+
+  SrUkf() : SrUkf(Motion{}, Measurement{}) {}
+  SrUkf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+      : motion_(motion),
+        measurement_(measurement),
+        params_(params),
+        w_(Weights::from(params)),
+        x_(State::Zero()),
+        Sx_(Cov::Identity()),
+        P_(Cov::Identity()) {
+    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
+  }
+
+  /// Set the state and covariance (factorised once here).
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
+  [[nodiscard]] Status reset(const State& x, const Cov& P) {
+    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    const Eigen::LLT<Cov> llt(symmetrised(P));
+    if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+    commit(x, llt.matrixL());
+    return Status::kOk;
+  }
+
+  /// Predict by dt seconds with the model's process noise Q(dt).
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
+  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+
+  /// Predict by dt seconds with an explicit process noise Q.
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
+  [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
+    if (!ScalarTraits<Scalar>::is_finite(dt) || !all_finite(Q)) return Status::kNonFinite;
+    Cov Sq;
+    const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
+    if (sq != Status::kOk) return sq;
+    const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
+    const auto Y = sigma::propagate(motion_, X, dt);
+    const State x = sigma::state_mean(Y, w_.wi);
+    Mat<Scalar, kStateDim, 2 * kStateDim + kStateDim> A;
+    for (int i = 1; i < kSigmaCount; ++i) A.col(i - 1) = (Y.col(i) - x) * w_.sqrt_wi;
+    A.template rightCols<kStateDim>() = Sq;
+    Cov S = triangularise(A);
+    const Status up = cholesky_rank1_update<Scalar, kStateDim>(S, Y.col(0) - x, w_.wc0);
+    if (up != Status::kOk) return up;
+    if (!all_finite(x)) return Status::kNonFinite;
+    commit(x, S);
+    return Status::kOk;
+  }
+
+  /// Innovation of z against the current (predicted) state with the model's R.
+  Innov innovation(const MeasVec& z) const { return innovation(z, measurement_.noise()); }
+
+  /// Innovation of z with an explicit measurement noise R (S = Sy Sy^T).
+  Innov innovation(const MeasVec& z, const MeasCov& R) const {
+    Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};
+    Moments m;
+    out.status = moments(z, R, m);
+    if (out.status != Status::kOk) return out;
+    out.nu = m.nu;
+    out.S = m.Sy * m.Sy.transpose();
+    out.d2 = solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm();
+    return out;
+  }
+
+  /// Update with z and the model's R.
+  /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z) { return update(z, measurement_.noise()); }
+
+  /// Update with z and an explicit R.
+  /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
+    diag_.fused = false;
+    Moments m;
+    const Status st = moments(z, R, m);
+    if (st != Status::kOk) return fail(st);
+    // K^T = Sy^-T (Sy^-1 Pxz^T).
+    const Mat<Scalar, kMeasDim, kStateDim> Kt = solve_lower_transposed<Scalar, kMeasDim, kStateDim>(
+        m.Sy, solve_lower<Scalar, kMeasDim, kStateDim>(m.Sy, m.Pxz.transpose()));
+    const Mat<Scalar, kStateDim, kMeasDim> K = Kt.transpose();
+    const State x = x_ + K * m.nu;
+    Cov S = Sx_;
+    const Mat<Scalar, kStateDim, kMeasDim> U = K * m.Sy;
+    const Status down = cholesky_rank_update<Scalar, kStateDim, kMeasDim>(S, U, Scalar(-1));
+    if (down != Status::kOk) return fail(down);
+    if (!all_finite(x)) return fail(Status::kNonFinite);
+    commit(x, S);
+    diag_.innovation = m.nu;
+    diag_.innovation_variance = (m.Sy * m.Sy.transpose()).diagonal();
+    diag_.nis = solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm();
+    diag_.fused = true;
+    diag_.status = Status::kOk;
+    return Status::kOk;
+  }
+
+  const State& x() const { return x_; }
+  /// P = Sx Sx^T, formed once per committed step.
+  const Cov& P() const { return P_; }
+  /// Lower-triangular square root of P carried by the filter.
+  const Cov& sqrt_P() const { return Sx_; }
+  const Motion& motion() const { return motion_; }
+  const Measurement& measurement() const { return measurement_; }
+  Motion& motion() { return motion_; }
+  Measurement& measurement() { return measurement_; }
+  const Params& params() const { return params_; }
+  const Weights& weights() const { return w_; }
+  /// Diagnostics of the last update attempt.
+  const Diagnostics& diagnostics() const { return diag_; }
+
+ private:
+  struct Moments {
+    MeasVec nu;
+    MeasCov Sy;  ///< Lower-triangular square root of S.
+    Mat<Scalar, kStateDim, kMeasDim> Pxz;
+  };
+
+  Status moments(const MeasVec& z, const MeasCov& R, Moments& m) const {
+    if (!all_finite(z) || !all_finite(R)) return Status::kNonFinite;
+    MeasCov Sr;
+    const Status sr = cholesky_semidefinite<Scalar, kMeasDim>(symmetrised(R), Sr);
+    if (sr != Status::kOk) return sr;
+    const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
+    const auto Z = sigma::measure(measurement_, X);
+    const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
+    const auto dZ = sigma::measurement_deviations(measurement_, Z, z_mean);
+    Mat<Scalar, kMeasDim, 2 * kStateDim + kMeasDim> A;
+    Mat<Scalar, kStateDim, kMeasDim> Pxz = Mat<Scalar, kStateDim, kMeasDim>::Zero();
+    for (int i = 1; i < kSigmaCount; ++i) {
+      A.col(i - 1) = dZ.col(i) * w_.sqrt_wi;
+      Pxz += (X.col(i) - x_) * dZ.col(i).transpose() * w_.wi;
+    }
+    A.template rightCols<kMeasDim>() = Sr;
+    MeasCov Sy = triangularise(A);
+    const Status up = cholesky_rank1_update<Scalar, kMeasDim>(Sy, dZ.col(0), w_.wc0);
+    if (up != Status::kOk) return up;
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (!(Sy(i, i) > Scalar(0))) return Status::kNotPositiveDefinite;
+    }
+    m.Sy = Sy;
+    m.Pxz = Pxz;
+    m.nu = measurement_.residual(z, z_mean);
+    if (!all_finite(m.Sy) || !all_finite(m.Pxz) || !all_finite(m.nu)) return Status::kNonFinite;
+    return Status::kOk;
+  }
+
+  void commit(const State& x, const Cov& S) {
+    x_ = x;
+    Sx_ = S;
+    P_ = symmetrised(Sx_ * Sx_.transpose());
+  }
+
+  Status fail(Status s) {
+    diag_.status = s;
+    return s;
+  }
+
+  Motion motion_;
+  Measurement measurement_;
+  Params params_;
+  Weights w_;
+  State x_;
+  Cov Sx_;
+  Cov P_;
+  Diagnostics diag_;
+};
+
+}  // namespace kestrel

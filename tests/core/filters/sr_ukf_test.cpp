@@ -1,0 +1,54 @@
+// SR-UKF: equals the UKF to 1e-9 relative over a whole S1 run on CA-2D
+// (velocity and acceleration unobserved); carries a lower-triangular factor;
+// equals the KF on a linear model; bad input returns a status; no heap.
+#include <catch2/catch.hpp>
+
+#include "core/filters/filter_checks.hpp"
+#include "core/filters/sr_check.hpp"
+#include "kestrel/filters/sr_ukf.hpp"
+#include "kestrel/filters/ukf.hpp"
+#include "kestrel/tracking/tracker.hpp"
+
+using kestrel::ConstantVelocity2D;
+using kestrel::PolarRadar;
+using kestrel::SrUkf;
+using kestrel::Ukf;
+
+SCENARIO("the SR-UKF equals the UKF over a whole S1 run", "[sr_ukf][sr]") {
+  GIVEN("UKF and SR-UKF on CA-2D with the polar radar, same seeded S1 measurements") {
+    WHEN("both run 299 predict/update steps") {
+      const auto r = kestrel::test::compare_square_root_on_s1<Ukf, SrUkf>(11);
+      THEN("x and P agree to 1e-9 relative at every step (SPEC 5)") {
+        REQUIRE(r.steps == 299);
+        CHECK(r.worst_x < 1e-9);
+        CHECK(r.worst_P < 1e-9);
+        INFO("worst relative difference: x " << r.worst_x << ", P " << r.worst_P);
+        CHECK(r.worst_sqrt < 1e-12);
+        // And it tracks: SPEC 12 gives 82 m RMSE for EKF-CA with qj = 16 on S1
+        // (the weave lags); sanity only, not the comparison.
+        CHECK(r.rmse_m < 100.0);
+      }
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Scenario: on a linear model the SR-UKF is the textbook Kalman filter", "[sr_ukf]", double,
+                   float) {
+  kestrel::test::check_equals_kalman_filter<SrUkf, TestType>();
+}
+
+SCENARIO("the SR-UKF tracks through the +-pi bearing cut", "[sr_ukf][wrap]") {
+  kestrel::test::check_bearing_wrap<SrUkf>();
+}
+
+SCENARIO("the SR-UKF refuses bad input and keeps its state", "[sr_ukf][status]") {
+  kestrel::test::check_refuses_bad_input<SrUkf>();
+}
+
+TEMPLATE_TEST_CASE("Scenario: an SR-UKF step allocates nothing", "[sr_ukf][alloc]", double, float) {
+  kestrel::test::check_no_allocation_cv_radar<SrUkf, TestType>();
+}
+
+SCENARIO("the SR-UKF is a TrackingFilter", "[sr_ukf][tracker]") {
+  STATIC_REQUIRE(kestrel::TrackingFilter<SrUkf<ConstantVelocity2D<float>, PolarRadar<ConstantVelocity2D<float>>>>);
+}
