@@ -16,6 +16,9 @@
 //   x+ = x- + K residual(z, z-), P+ = P- - K S K^T (symmetrised).
 // Every measurement difference goes through residual() (bearing wrap, see
 // filters/sigma_points.hpp). On a linear model this is exactly the KF.
+// With an affine (block-diagonal) motion model the time update is taken in
+// its closed form x- = f(x), P- = F P F^T + Q per axis block, exactly the
+// central-difference transform of such a model (sigma_points.hpp).
 //
 // Commit-on-success like the EKF: kNonFinite; kNotPositiveDefinite for a
 // failed Cholesky of P, S or the updated P; x and P unchanged on error.
@@ -49,6 +52,9 @@ class Cdkf {
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   using Params = CentralDifferenceParams<Scalar>;
   using Weights = CentralDifferenceWeights<Scalar, kStateDim>;
+  /// Closed-form time update of an affine (block-diagonal) motion model
+  /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
+  static constexpr bool kAffinePredict = sigma::kAffineTimeUpdate<Motion>;
 
   Cdkf() : Cdkf(Motion{}, Measurement{}) {}
   Cdkf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
@@ -80,15 +86,25 @@ class Cdkf {
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
   [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
     if (!ScalarTraits<Scalar>::is_finite(dt) || !all_finite(Q)) return Status::kNonFinite;
-    const Eigen::LLT<Cov> llt(P_);
-    if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
-    const auto X = sigma::draw<Scalar, kStateDim>(x_, llt.matrixL(), w_.spread);
-    const auto Y = sigma::propagate(motion_, X, dt);
-    const State x = sigma::state_mean(Y, w_.wi);
-    Mat<Scalar, kStateDim, kStateDim> D1, D2;
-    sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
-                                          D1, D2);
-    const Cov P = symmetrised(D1 * D1.transpose() * w_.wc1 + D2 * D2.transpose() * w_.wc2 + Q);
+    State x;
+    Cov P;
+    if constexpr (kAffinePredict) {
+      // Affine motion: the first-order differences give exactly F P F^T,
+      // the second-order ones vanish (sigma_points.hpp); no points drawn.
+      // P_ is positive definite here (reset() and update() check it).
+      x = motion_.propagate(x_, dt);
+      P = sigma::affine_covariance(motion_, P_, Q, dt);
+    } else {
+      const Eigen::LLT<Cov> llt(P_);
+      if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+      const auto X = sigma::draw<Scalar, kStateDim>(x_, llt.matrixL(), w_.spread);
+      const auto Y = sigma::propagate(motion_, X, dt);
+      x = sigma::state_mean(Y, w_.wi);
+      Mat<Scalar, kStateDim, kStateDim> D1, D2;
+      sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
+                                            D1, D2);
+      P = symmetrised(D1 * D1.transpose() * w_.wc1 + D2 * D2.transpose() * w_.wc2 + Q);
+    }
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     x_ = x;
     P_ = P;
@@ -161,7 +177,7 @@ class Cdkf {
     if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
     const Cov L = llt.matrixL();
     const auto X = sigma::draw<Scalar, kStateDim>(x_, L, w_.spread);
-    const auto Z = sigma::measure(measurement_, X);
+    const auto Z = sigma::measure_drawn(measurement_, X, L);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
     Mat<Scalar, kMeasDim, kStateDim> D1, D2;
     const Measurement& h = measurement_;

@@ -14,6 +14,9 @@
 //   Pxz = sqrt(Wc1) Sx- [Z_(1..n) - Z_(n+1..2n)]^T, K = (Pxz / Sy^T) / Sy,
 //   x+ = x- + K residual(z, z-), Sx+ = cholupdate(Sx-, K Sy, -1).
 // Measurement differences go through residual() (filters/sigma_points.hpp).
+// With an affine (block-diagonal) motion model the time update is taken in
+// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block),
+// exactly the point form for such a model (sigma_points.hpp).
 //
 // Commit-on-success: kNonFinite; kNotPositiveDefinite when the downdate
 // would lose positive definiteness, Q or R is indefinite, or Sy is singular;
@@ -50,6 +53,9 @@ class SrCdkf {
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   using Params = CentralDifferenceParams<Scalar>;
   using Weights = CentralDifferenceWeights<Scalar, kStateDim>;
+  /// Closed-form time update of an affine (block-diagonal) motion model
+  /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
+  static constexpr bool kAffinePredict = sigma::kAffineTimeUpdate<Motion>;
 
   SrCdkf() : SrCdkf(Motion{}, Measurement{}) {}
   SrCdkf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
@@ -84,17 +90,29 @@ class SrCdkf {
     Cov Sq;
     const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
     if (sq != Status::kOk) return sq;
-    const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
-    const auto Y = sigma::propagate(motion_, X, dt);
-    const State x = sigma::state_mean(Y, w_.wi);
-    Mat<Scalar, kStateDim, kStateDim> D1, D2;
-    sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
-                                          D1, D2);
-    Mat<Scalar, kStateDim, 3 * kStateDim> A;
-    A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
-    A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
-    A.template rightCols<kStateDim>() = Sq;
-    const Cov S = triangularise(A);
+    State x;
+    Cov S;
+    if constexpr (kAffinePredict) {
+      // Affine motion: sqrt(Wc1) D1 = F Sx and D2 = 0, so Sx- =
+      // qr{[F Sx, sqrt(Q)]} and x- = f(x) (sigma_points.hpp). No points drawn.
+      x = motion_.propagate(x_, dt);
+      Mat<Scalar, kStateDim, 2 * kStateDim> A;
+      A.template leftCols<kStateDim>() = sigma::affine_sqrt(motion_, Sx_, dt);
+      A.template rightCols<kStateDim>() = Sq;
+      S = triangularise(A);
+    } else {
+      const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
+      const auto Y = sigma::propagate(motion_, X, dt);
+      x = sigma::state_mean(Y, w_.wi);
+      Mat<Scalar, kStateDim, kStateDim> D1, D2;
+      sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
+                                            D1, D2);
+      Mat<Scalar, kStateDim, 3 * kStateDim> A;
+      A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
+      A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
+      A.template rightCols<kStateDim>() = Sq;
+      S = triangularise(A);
+    }
     if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
     commit(x, S);
     return Status::kOk;
@@ -171,7 +189,7 @@ class SrCdkf {
     const Status sr = cholesky_semidefinite<Scalar, kMeasDim>(symmetrised(R), Sr);
     if (sr != Status::kOk) return sr;
     const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
-    const auto Z = sigma::measure(measurement_, X);
+    const auto Z = sigma::measure_drawn(measurement_, X, Sx_);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
     Mat<Scalar, kMeasDim, kStateDim> D1, D2;
     const Measurement& h = measurement_;

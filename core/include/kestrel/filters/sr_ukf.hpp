@@ -16,6 +16,9 @@
 // qr{} is Householder triangularisation (math/triangular.hpp); cholupdate is
 // math/cholesky_update.hpp (Eigen's LLT::rankUpdate allocates). sqrt(Q) and
 // sqrt(R) are semidefinite Cholesky factors (the DWNA Q of CV-2D is singular).
+// With an affine (block-diagonal) motion model the time update is taken in
+// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block),
+// exactly the point form for such a model (filters/sigma_points.hpp).
 //
 // Commit-on-success: kNonFinite; kNotPositiveDefinite when a downdate would
 // lose positive definiteness, Q or R is indefinite, or Sy is singular;
@@ -52,6 +55,9 @@ class SrUkf {
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   using Params = UnscentedParams<Scalar, kStateDim>;
   using Weights = UnscentedWeights<Scalar, kStateDim>;
+  /// Closed-form time update of an affine (block-diagonal) motion model
+  /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
+  static constexpr bool kAffinePredict = sigma::kAffineTimeUpdate<Motion>;
 
   SrUkf() : SrUkf(Motion{}, Measurement{}) {}
   SrUkf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
@@ -86,15 +92,28 @@ class SrUkf {
     Cov Sq;
     const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
     if (sq != Status::kOk) return sq;
-    const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
-    const auto Y = sigma::propagate(motion_, X, dt);
-    const State x = sigma::state_mean(Y, w_.wi);
-    Mat<Scalar, kStateDim, 2 * kStateDim + kStateDim> A;
-    for (int i = 1; i < kSigmaCount; ++i) A.col(i - 1) = (Y.col(i) - x) * w_.sqrt_wi;
-    A.template rightCols<kStateDim>() = Sq;
-    Cov S = triangularise(A);
-    const Status up = cholesky_rank1_update<Scalar, kStateDim>(S, Y.col(0) - x, w_.wc0);
-    if (up != Status::kOk) return up;
+    State x;
+    Cov S;
+    if constexpr (kAffinePredict) {
+      // Affine motion: Sx- = qr{[F Sx, sqrt(Q)]}, a factor of F P F^T + Q,
+      // and x- = f(x): the point form exactly, its rank-1 update by
+      // Y_0 - x- = 0 void (sigma_points.hpp). No points drawn.
+      x = motion_.propagate(x_, dt);
+      Mat<Scalar, kStateDim, 2 * kStateDim> A;
+      A.template leftCols<kStateDim>() = sigma::affine_sqrt(motion_, Sx_, dt);
+      A.template rightCols<kStateDim>() = Sq;
+      S = triangularise(A);
+    } else {
+      const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
+      const auto Y = sigma::propagate(motion_, X, dt);
+      x = sigma::state_mean(Y, w_.wi);
+      Mat<Scalar, kStateDim, 2 * kStateDim + kStateDim> A;
+      for (int i = 1; i < kSigmaCount; ++i) A.col(i - 1) = (Y.col(i) - x) * w_.sqrt_wi;
+      A.template rightCols<kStateDim>() = Sq;
+      S = triangularise(A);
+      const Status up = cholesky_rank1_update<Scalar, kStateDim>(S, Y.col(0) - x, w_.wc0);
+      if (up != Status::kOk) return up;
+    }
     if (!all_finite(x)) return Status::kNonFinite;
     commit(x, S);
     return Status::kOk;
@@ -172,7 +191,7 @@ class SrUkf {
     const Status sr = cholesky_semidefinite<Scalar, kMeasDim>(symmetrised(R), Sr);
     if (sr != Status::kOk) return sr;
     const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
-    const auto Z = sigma::measure(measurement_, X);
+    const auto Z = sigma::measure_drawn(measurement_, X, Sx_);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
     const auto dZ = sigma::measurement_deviations(measurement_, Z, z_mean);
     Mat<Scalar, kMeasDim, 2 * kStateDim + kMeasDim> A;

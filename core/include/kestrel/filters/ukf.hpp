@@ -14,6 +14,9 @@
 //   Pxz = sum Wc_i (X_i - x-) dZ_i^T, K = Pxz S^-1,
 //   x+ = x- + K residual(z, z-), P+ = P- - K S K^T (symmetrised).
 // On a linear model this is exactly the Kalman filter (tested).
+// With an affine (block-diagonal) motion model the time update is taken in
+// its closed form x- = f(x), P- = F P F^T + Q per axis block, exactly the
+// unscented transform of such a model (filters/sigma_points.hpp).
 // Bearings: means and deviations go through the model's residual(), see
 // filters/sigma_points.hpp.
 //
@@ -50,6 +53,9 @@ class Ukf {
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   using Params = UnscentedParams<Scalar, kStateDim>;
   using Weights = UnscentedWeights<Scalar, kStateDim>;
+  /// Closed-form time update of an affine (block-diagonal) motion model
+  /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
+  static constexpr bool kAffinePredict = sigma::kAffineTimeUpdate<Motion>;
 
   Ukf() : Ukf(Motion{}, Measurement{}) {}
   Ukf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
@@ -82,12 +88,22 @@ class Ukf {
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
   [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
     if (!ScalarTraits<Scalar>::is_finite(dt) || !all_finite(Q)) return Status::kNonFinite;
-    const Eigen::LLT<Cov> llt(P_);
-    if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
-    const auto X = sigma::draw<Scalar, kStateDim>(x_, llt.matrixL(), w_.spread);
-    const auto Y = sigma::propagate(motion_, X, dt);
-    const State x = sigma::state_mean(Y, w_.wi);
-    const Cov P = symmetrised(weighted_outer(Y, x) + Q);
+    State x;
+    Cov P;
+    if constexpr (kAffinePredict) {
+      // Affine motion: the unscented transform is exactly f(x) and
+      // F P F^T + Q (sigma_points.hpp), no points drawn. P_ is positive
+      // definite here (reset() and update() check it; F is invertible).
+      x = motion_.propagate(x_, dt);
+      P = sigma::affine_covariance(motion_, P_, Q, dt);
+    } else {
+      const Eigen::LLT<Cov> llt(P_);
+      if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+      const auto X = sigma::draw<Scalar, kStateDim>(x_, llt.matrixL(), w_.spread);
+      const auto Y = sigma::propagate(motion_, X, dt);
+      x = sigma::state_mean(Y, w_.wi);
+      P = symmetrised(weighted_outer(Y, x) + Q);
+    }
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     x_ = x;
     P_ = P;
@@ -160,8 +176,9 @@ class Ukf {
     if (!all_finite(z) || !all_finite(R)) return Status::kNonFinite;
     const Eigen::LLT<Cov> llt(P_);
     if (llt.info() != Eigen::Success) return Status::kNotPositiveDefinite;
-    const auto X = sigma::draw<Scalar, kStateDim>(x_, llt.matrixL(), w_.spread);
-    const auto Z = sigma::measure(measurement_, X);
+    const Cov L = llt.matrixL();
+    const auto X = sigma::draw<Scalar, kStateDim>(x_, L, w_.spread);
+    const auto Z = sigma::measure_drawn(measurement_, X, L);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
     const auto dZ = sigma::measurement_deviations(measurement_, Z, z_mean);
     // Deviations of the redrawn points from their own mean x_: X_0 - x = 0

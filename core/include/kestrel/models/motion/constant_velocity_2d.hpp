@@ -19,6 +19,9 @@ struct ConstantVelocity2D {
   using Scalar = S;
   static constexpr int kStateDim = 4;
   static constexpr int kAxisDim = 2;
+  /// F1 is unit upper triangular (structure the filters exploit,
+  /// kestrel/filters/structure.hpp).
+  static constexpr bool kAxisTransitionUnitUpper = true;
   static constexpr int kNoiseDim = 2;  ///< One acceleration input per axis.
 
   /// Where each quantity sits in the state vector (PX4-style named layout).
