@@ -7,7 +7,8 @@
 //   - the tracker path classes of the host board's radar tracker
 //     (kMaxTracks 16, kMaxPlots 32, gate 99.9 %), each with the StepStats
 //     that prove a measured step really took that path.
-// A new filter joins both programs with one line in for_each_filter_case().
+// A new filter joins both programs with one line in for_each_filter_case()
+// (and kTrackerPaths<F> = false if it is measured as a filter only).
 #pragma once
 
 #include <cmath>
@@ -20,9 +21,13 @@
 #include <vector>
 
 #include "bench/bench_inputs.hpp"
+#include "kestrel/filters/cdkf.hpp"
 #include "kestrel/filters/ekf.hpp"
 #include "kestrel/filters/r2aekf.hpp"
+#include "kestrel/filters/sr_cdkf.hpp"
+#include "kestrel/filters/sr_ukf.hpp"
 #include "kestrel/filters/structure.hpp"
+#include "kestrel/filters/ukf.hpp"
 #include "kestrel/scalar/fixed_point_eigen.hpp"
 #include "kestrel/host/board.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
@@ -40,6 +45,28 @@ template <class S>
 using DenseEkfCa = Ekf<Dense<CaMotion<S>>, Dense<CaPolarRadar<S>>>;
 template <class S>
 using DenseR2AekfCa = R2Aekf<Dense<CaMotion<S>>, Dense<CaPolarRadar<S>>>;
+
+/// A sigma-point filter on CA-2D + polar radar: structured (the models as
+/// they are) or dense (Dense<M>, every time update through sigma points).
+template <template <class, class> class Filter, class S>
+using SigmaCa = Filter<CaMotion<S>, CaPolarRadar<S>>;
+template <template <class, class> class Filter, class S>
+using DenseSigmaCa = Filter<Dense<CaMotion<S>>, Dense<CaPolarRadar<S>>>;
+
+/// Whether the tracker paths of filter F are measured too: the EKF family
+/// the board's radar tracker runs. The sigma-point filters are measured as
+/// filters only (filter/ paths; their tracker paths would differ from the
+/// EKF's by the filter calls alone).
+template <class F>
+inline constexpr bool kTrackerPaths = true;
+template <class M, class H>
+inline constexpr bool kTrackerPaths<Ukf<M, H>> = false;
+template <class M, class H>
+inline constexpr bool kTrackerPaths<Cdkf<M, H>> = false;
+template <class M, class H>
+inline constexpr bool kTrackerPaths<SrUkf<M, H>> = false;
+template <class M, class H>
+inline constexpr bool kTrackerPaths<SrCdkf<M, H>> = false;
 
 /// Calls visit.template operator()<Filter>(CaseName) for every filter case.
 /// Forms: "dense" is the generic filter on the same models with their
@@ -61,6 +88,25 @@ void for_each_filter_case(Visitor&& visit) {
   visit.template operator()<R2AekfCa<double>>(CaseName{"r2aekf", "double", "structured"});
   visit.template operator()<DenseR2AekfCa<float>>(CaseName{"r2aekf", "float", "dense"});
   visit.template operator()<R2AekfCa<float>>(CaseName{"r2aekf", "float", "structured"});
+  // Sigma-point filters (filter paths only, kTrackerPaths): "structured"
+  // takes the closed-form time update of the affine CA-2D
+  // (filters/sigma_points.hpp), "dense" draws the points. The square-root
+  // forms are measured in double only: in float both forms refuse an early
+  // S1 update of this run (the rank-1 downdate of Sx reports
+  // kNotPositiveDefinite after the two-point initiation; SR-UKF at the first
+  // update, SR-CDKF within the first six).
+  visit.template operator()<DenseSigmaCa<Ukf, double>>(CaseName{"ukf-ca", "double", "dense"});
+  visit.template operator()<SigmaCa<Ukf, double>>(CaseName{"ukf-ca", "double", "structured"});
+  visit.template operator()<DenseSigmaCa<Ukf, float>>(CaseName{"ukf-ca", "float", "dense"});
+  visit.template operator()<SigmaCa<Ukf, float>>(CaseName{"ukf-ca", "float", "structured"});
+  visit.template operator()<DenseSigmaCa<Cdkf, double>>(CaseName{"cdkf-ca", "double", "dense"});
+  visit.template operator()<SigmaCa<Cdkf, double>>(CaseName{"cdkf-ca", "double", "structured"});
+  visit.template operator()<DenseSigmaCa<Cdkf, float>>(CaseName{"cdkf-ca", "float", "dense"});
+  visit.template operator()<SigmaCa<Cdkf, float>>(CaseName{"cdkf-ca", "float", "structured"});
+  visit.template operator()<DenseSigmaCa<SrUkf, double>>(CaseName{"srukf-ca", "double", "dense"});
+  visit.template operator()<SigmaCa<SrUkf, double>>(CaseName{"srukf-ca", "double", "structured"});
+  visit.template operator()<DenseSigmaCa<SrCdkf, double>>(CaseName{"srcdkf-ca", "double", "dense"});
+  visit.template operator()<SigmaCa<SrCdkf, double>>(CaseName{"srcdkf-ca", "double", "structured"});
 }
 
 /// Model parameters of every case: the S1 sensor and the tuned EKF-CA of

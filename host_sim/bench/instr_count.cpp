@@ -173,7 +173,7 @@ int main(int argc, char** argv) {
     const std::vector<FrameSi> s1 = s1_frames();
     for_each_filter_case([&]<class F>(const CaseName& n) {
       count_filter<F>(n, s1);
-      count_tracker<F>(n);
+      if constexpr (kTrackerPaths<F>) count_tracker<F>(n);
     });
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-instr-count: %s\n", e.what());
