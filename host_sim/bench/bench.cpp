@@ -95,12 +95,7 @@ void bm_tracker_restart(benchmark::State& state, const TrackerPath<Tracker>* p) 
 }
 
 template <class F>
-void register_case(const CaseName& n, const std::vector<FrameSi>& s1) {
-  const std::string tail = std::string(n.filter) + "/" + n.scalar + "/" + n.form + "/";
-  auto run = std::make_shared<const FilterRun<F>>(make_filter_run<F>(s1));
-  benchmark::RegisterBenchmark(("filter/" + tail + "step").c_str(), bm_filter_step<F>, run.get());
-  g_keep.push_back(run);
-
+void register_tracker_paths(const std::string& tail) {
   using Tracker = BenchTracker<F>;
   auto paths = std::make_shared<std::vector<TrackerPath<Tracker>>>(make_tracker_paths<F>());
   for (const auto& p : *paths) {
@@ -112,6 +107,16 @@ void register_case(const CaseName& n, const std::vector<FrameSi>& s1) {
     }
   }
   g_keep.push_back(paths);
+}
+
+/// The filter path of case n, and its tracker paths if kTrackerPaths<F>.
+template <class F>
+void register_case(const CaseName& n, const std::vector<FrameSi>& s1) {
+  const std::string tail = std::string(n.filter) + "/" + n.scalar + "/" + n.form + "/";
+  auto run = std::make_shared<const FilterRun<F>>(make_filter_run<F>(s1));
+  benchmark::RegisterBenchmark(("filter/" + tail + "step").c_str(), bm_filter_step<F>, run.get());
+  g_keep.push_back(run);
+  if constexpr (kTrackerPaths<F>) register_tracker_paths<F>(tail);
 }
 
 }  // namespace
