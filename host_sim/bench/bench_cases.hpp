@@ -7,7 +7,9 @@
 //   - the tracker path classes of the host board's radar tracker
 //     (kMaxTracks 16, kMaxPlots 32, gate 99.9 %), each with the StepStats
 //     that prove a measured step really took that path.
-// A new filter joins both programs with one line in for_each_filter_case()
+// A new filter joins both programs with one line in for_each_ekf_case() or
+// for_each_sigma_case() (a new family: a new function, and for
+// kestrel-instr-count a translation unit of its own, see instr_count.hpp)
 // (and kTrackerPaths<F> = false if it is measured as a filter only).
 #pragma once
 
@@ -68,7 +70,7 @@ inline constexpr bool kTrackerPaths<SrUkf<M, H>> = false;
 template <class M, class H>
 inline constexpr bool kTrackerPaths<SrCdkf<M, H>> = false;
 
-/// Calls visit.template operator()<Filter>(CaseName) for every filter case.
+/// Calls visit.template operator()<Filter>(CaseName) for every EKF-family case.
 /// Forms: "dense" is the generic filter on the same models with their
 /// structure hidden (Dense<M>: the test oracle and the baseline);
 /// "structured" lets the filter use what the models expose
@@ -77,7 +79,7 @@ inline constexpr bool kTrackerPaths<SrCdkf<M, H>> = false;
 /// are off for fixed point), so its two forms run the same code; both rows
 /// are kept so that the table shows it.
 template <class Visitor>
-void for_each_filter_case(Visitor&& visit) {
+void for_each_ekf_case(Visitor&& visit) {
   visit.template operator()<DenseEkfCa<double>>(CaseName{"ekf-ca", "double", "dense"});
   visit.template operator()<EkfCa<double>>(CaseName{"ekf-ca", "double", "structured"});
   visit.template operator()<DenseEkfCa<float>>(CaseName{"ekf-ca", "float", "dense"});
@@ -88,6 +90,11 @@ void for_each_filter_case(Visitor&& visit) {
   visit.template operator()<R2AekfCa<double>>(CaseName{"r2aekf", "double", "structured"});
   visit.template operator()<DenseR2AekfCa<float>>(CaseName{"r2aekf", "float", "dense"});
   visit.template operator()<R2AekfCa<float>>(CaseName{"r2aekf", "float", "structured"});
+}
+
+/// The sigma-point cases, as for_each_ekf_case.
+template <class Visitor>
+void for_each_sigma_case(Visitor&& visit) {
   // Sigma-point filters (filter paths only, kTrackerPaths): "structured"
   // takes the closed-form time update of the affine CA-2D
   // (filters/sigma_points.hpp), "dense" draws the points. The square-root
@@ -107,6 +114,13 @@ void for_each_filter_case(Visitor&& visit) {
   visit.template operator()<SigmaCa<SrUkf, double>>(CaseName{"srukf-ca", "double", "structured"});
   visit.template operator()<DenseSigmaCa<SrCdkf, double>>(CaseName{"srcdkf-ca", "double", "dense"});
   visit.template operator()<SigmaCa<SrCdkf, double>>(CaseName{"srcdkf-ca", "double", "structured"});
+}
+
+/// Every case: the EKF family, then the sigma-point filters.
+template <class Visitor>
+void for_each_filter_case(Visitor&& visit) {
+  for_each_ekf_case(visit);
+  for_each_sigma_case(visit);
 }
 
 /// Model parameters of every case: the S1 sensor and the tuned EKF-CA of

@@ -1,0 +1,16 @@
+// kestrel-instr-count: the EKF (EKF-CA, R2-AEKF) family's cases, in a translation unit of
+// their own (instr_count.hpp says why).
+#include <vector>
+
+#include "bench/instr_count.hpp"
+
+namespace kestrel::bench {
+
+void count_ekf_family(const std::vector<FrameSi>& s1) {
+  for_each_ekf_case([&]<class F>(const CaseName& n) {
+    count_filter<F>(n, s1);
+    if constexpr (kTrackerPaths<F>) count_tracker<F>(n);
+  });
+}
+
+}  // namespace kestrel::bench
