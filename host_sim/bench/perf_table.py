@@ -14,6 +14,7 @@ single-frame tracker paths) and move with machine load and CPU model.
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -30,7 +31,7 @@ def bench_ns(exe, min_time, repetitions):
     for b in json.loads(out)["benchmarks"]:
         if b.get("aggregate_name") != "median":
             continue
-        name = b["run_name"].replace("/manual_time", "")
+        name = re.sub(r"/iterations:\d+", "", b["run_name"]).replace("/manual_time", "")
         scale = {"ns": 1.0, "us": 1e3, "ms": 1e6}[b["time_unit"]]
         # Manual-time benchmarks report thread CPU time as real_time.
         t = b["real_time"] if "manual_time" in b["run_name"] else b["cpu_time"]
