@@ -15,7 +15,8 @@
 //   x+ = x- + K residual(z, z-), Sx+ = cholupdate(Sx-, K Sy, -1).
 // Measurement differences go through residual() (filters/sigma_points.hpp).
 // With an affine (block-diagonal) motion model the time update is taken in
-// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block),
+// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block,
+// the QR on the compound matrix's block profile: sqrt_time_update.hpp),
 // exactly the point form for such a model (sigma_points.hpp).
 //
 // Commit-on-success: kNonFinite; kNotPositiveDefinite when the downdate
@@ -25,6 +26,7 @@
 
 #include "kestrel/filters/innovation.hpp"
 #include "kestrel/filters/sigma_points.hpp"
+#include "kestrel/filters/sqrt_time_update.hpp"
 #include "kestrel/math/cholesky_update.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
@@ -81,7 +83,19 @@ class SrCdkf {
 
   /// Predict by dt seconds with the model's process noise Q(dt).
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
-  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+  [[nodiscard]] Status predict(Scalar dt) {
+    if constexpr (kAffinePredict) {
+      // Q = blkdiag(Q1, ...): its factor from one d x d Cholesky of Q1
+      // (sqrt_time_update.hpp), never the n x n Q.
+      if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
+      Cov Sq;
+      const Status sq = sigma::block_sqrt_process_noise(motion_, dt, Sq);
+      if (sq != Status::kOk) return sq;
+      return predict_affine(dt, Sq);
+    } else {
+      return predict(dt, motion_.process_noise(dt));
+    }
+  }
 
   /// Predict by dt seconds with an explicit process noise Q.
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
@@ -90,20 +104,12 @@ class SrCdkf {
     Cov Sq;
     const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
     if (sq != Status::kOk) return sq;
-    State x;
-    Cov S;
     if constexpr (kAffinePredict) {
-      // Affine motion: sqrt(Wc1) D1 = F Sx and D2 = 0, so Sx- =
-      // qr{[F Sx, sqrt(Q)]} and x- = f(x) (sigma_points.hpp). No points drawn.
-      x = motion_.propagate(x_, dt);
-      Mat<Scalar, kStateDim, 2 * kStateDim> A;
-      A.template leftCols<kStateDim>() = sigma::affine_sqrt(motion_, Sx_, dt);
-      A.template rightCols<kStateDim>() = Sq;
-      S = triangularise(A);
+      return predict_affine(dt, Sq);
     } else {
       const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
       const auto Y = sigma::propagate(motion_, X, dt);
-      x = sigma::state_mean(Y, w_.wi);
+      const State x = sigma::state_mean(Y, w_.wi);
       Mat<Scalar, kStateDim, kStateDim> D1, D2;
       sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
                                             D1, D2);
@@ -111,11 +117,11 @@ class SrCdkf {
       A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
       A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
       A.template rightCols<kStateDim>() = Sq;
-      S = triangularise(A);
+      const Cov S = triangularise(A);
+      if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
+      commit(x, S);
+      return Status::kOk;
     }
-    if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
-    commit(x, S);
-    return Status::kOk;
   }
 
   /// Innovation of z against the current (predicted) state with the model's R.
@@ -182,6 +188,18 @@ class SrCdkf {
     MeasCov Sy;  ///< Lower-triangular square root of S.
     Mat<Scalar, kStateDim, kMeasDim> Pxz;
   };
+
+  /// Closed-form time update of an affine motion, Sq = sqrt(Q) lower
+  /// triangular: sqrt(Wc1) D1 = F Sx and D2 = 0 (sigma_points.hpp), so
+  /// x- = f(x) and Sx- = qr{[F Sx, Sq]} on its block profile
+  /// (sqrt_time_update.hpp), a factor of F P F^T + Q. No points drawn.
+  Status predict_affine(Scalar dt, const Cov& Sq) {
+    const State x = motion_.propagate(x_, dt);
+    const Cov S = sigma::affine_sqrt_time_update(motion_, Sx_, Sq, dt);
+    if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
+    commit(x, S);
+    return Status::kOk;
+  }
 
   Status moments(const MeasVec& z, const MeasCov& R, Moments& m) const {
     if (!all_finite(z) || !all_finite(R)) return Status::kNonFinite;

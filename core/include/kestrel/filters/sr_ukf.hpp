@@ -17,7 +17,8 @@
 // math/cholesky_update.hpp (Eigen's LLT::rankUpdate allocates). sqrt(Q) and
 // sqrt(R) are semidefinite Cholesky factors (the DWNA Q of CV-2D is singular).
 // With an affine (block-diagonal) motion model the time update is taken in
-// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block),
+// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block,
+// the QR on the compound matrix's block profile: sqrt_time_update.hpp),
 // exactly the point form for such a model (filters/sigma_points.hpp).
 //
 // Commit-on-success: kNonFinite; kNotPositiveDefinite when a downdate would
@@ -27,6 +28,7 @@
 
 #include "kestrel/filters/innovation.hpp"
 #include "kestrel/filters/sigma_points.hpp"
+#include "kestrel/filters/sqrt_time_update.hpp"
 #include "kestrel/math/cholesky_update.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
@@ -83,7 +85,19 @@ class SrUkf {
 
   /// Predict by dt seconds with the model's process noise Q(dt).
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
-  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+  [[nodiscard]] Status predict(Scalar dt) {
+    if constexpr (kAffinePredict) {
+      // Q = blkdiag(Q1, ...): its factor from one d x d Cholesky of Q1
+      // (sqrt_time_update.hpp), never the n x n Q.
+      if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
+      Cov Sq;
+      const Status sq = sigma::block_sqrt_process_noise(motion_, dt, Sq);
+      if (sq != Status::kOk) return sq;
+      return predict_affine(dt, Sq);
+    } else {
+      return predict(dt, motion_.process_noise(dt));
+    }
+  }
 
   /// Predict by dt seconds with an explicit process noise Q.
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
@@ -92,31 +106,22 @@ class SrUkf {
     Cov Sq;
     const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
     if (sq != Status::kOk) return sq;
-    State x;
-    Cov S;
     if constexpr (kAffinePredict) {
-      // Affine motion: Sx- = qr{[F Sx, sqrt(Q)]}, a factor of F P F^T + Q,
-      // and x- = f(x): the point form exactly, its rank-1 update by
-      // Y_0 - x- = 0 void (sigma_points.hpp). No points drawn.
-      x = motion_.propagate(x_, dt);
-      Mat<Scalar, kStateDim, 2 * kStateDim> A;
-      A.template leftCols<kStateDim>() = sigma::affine_sqrt(motion_, Sx_, dt);
-      A.template rightCols<kStateDim>() = Sq;
-      S = triangularise(A);
+      return predict_affine(dt, Sq);
     } else {
       const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
       const auto Y = sigma::propagate(motion_, X, dt);
-      x = sigma::state_mean(Y, w_.wi);
+      const State x = sigma::state_mean(Y, w_.wi);
       Mat<Scalar, kStateDim, 2 * kStateDim + kStateDim> A;
       for (int i = 1; i < kSigmaCount; ++i) A.col(i - 1) = (Y.col(i) - x) * w_.sqrt_wi;
       A.template rightCols<kStateDim>() = Sq;
-      S = triangularise(A);
+      Cov S = triangularise(A);
       const Status up = cholesky_rank1_update<Scalar, kStateDim>(S, Y.col(0) - x, w_.wc0);
       if (up != Status::kOk) return up;
+      if (!all_finite(x)) return Status::kNonFinite;
+      commit(x, S);
+      return Status::kOk;
     }
-    if (!all_finite(x)) return Status::kNonFinite;
-    commit(x, S);
-    return Status::kOk;
   }
 
   /// Innovation of z against the current (predicted) state with the model's R.
@@ -184,6 +189,18 @@ class SrUkf {
     MeasCov Sy;  ///< Lower-triangular square root of S.
     Mat<Scalar, kStateDim, kMeasDim> Pxz;
   };
+
+  /// Closed-form time update of an affine motion, Sq = sqrt(Q) lower
+  /// triangular: x- = f(x), Sx- = qr{[F Sx, Sq]} on its block profile
+  /// (sqrt_time_update.hpp), a factor of F P F^T + Q; the point form's
+  /// rank-1 update by Y_0 - x- = 0 is void (sigma_points.hpp). No points drawn.
+  Status predict_affine(Scalar dt, const Cov& Sq) {
+    const State x = motion_.propagate(x_, dt);
+    const Cov S = sigma::affine_sqrt_time_update(motion_, Sx_, Sq, dt);
+    if (!all_finite(x)) return Status::kNonFinite;
+    commit(x, S);
+    return Status::kOk;
+  }
 
   Status moments(const MeasVec& z, const MeasCov& R, Moments& m) const {
     if (!all_finite(z) || !all_finite(R)) return Status::kNonFinite;

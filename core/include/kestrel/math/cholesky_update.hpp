@@ -95,11 +95,13 @@ template <class S, int kN, int kM>
 
 /// Lower-triangular L with A = L L^T for a symmetric positive semi-definite A
 /// (reads the lower triangle). A pivot d_j <= tol is treated as an exact zero
-/// and its column set to 0, with tol = 16 * n * eps * max_i A_ii (round-off of
-/// a rank-deficient matrix such as the DWNA Q); a pivot below -tol means A is
-/// indefinite.
+/// and its column set to 0, with tol = 16 * kTolN * eps * max_i A_ii
+/// (round-off of a rank-deficient matrix such as the DWNA Q; kTolN = n by
+/// default); a pivot below -tol means A is indefinite. A diagonal block of a
+/// larger block-diagonal matrix passes that matrix's size as kTolN, so its
+/// factor is exactly the corresponding block of the larger factor.
 /// @return kOk; kNotPositiveDefinite (indefinite A; L unchanged); kNonFinite.
-template <class S, int kN>
+template <class S, int kN, int kTolN = kN>
 [[nodiscard]] Status cholesky_semidefinite(const Mat<S, kN, kN>& A, Mat<S, kN, kN>& L) {
   using T = ScalarTraits<S>;
   S max_diag = S(0);
@@ -107,7 +109,7 @@ template <class S, int kN>
     if (!T::is_finite(A(i, i))) return Status::kNonFinite;
     if (A(i, i) > max_diag) max_diag = A(i, i);
   }
-  const S tol = S(16 * kN) * Eigen::NumTraits<S>::epsilon() * max_diag;
+  const S tol = S(16 * kTolN) * Eigen::NumTraits<S>::epsilon() * max_diag;
   Mat<S, kN, kN> out = Mat<S, kN, kN>::Zero();
   for (int j = 0; j < kN; ++j) {
     S d = A(j, j);

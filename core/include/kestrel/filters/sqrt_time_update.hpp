@@ -1,0 +1,117 @@
+// The square-root time update of an affine, block-diagonal motion model
+// (issue 9): Sx- = qr{[F Sx, sqrt(Q)]}, which filters/sigma_points.hpp's
+// header note shows to be the SR-UKF and SR-CDKF time update of such a
+// model exactly (van der Merwe 2004, algorithms 10 and 11, with Y_i - x- =
+// +-c F Sx_i). The triangularisation is math/triangular.hpp's Householder
+// (Golub and Van Loan 4th ed. 5.2.2) restricted to the compound matrix's
+// non-zeros.
+//
+// Structure. F = blkdiag(F1, ..., F1) and Sx, sqrt(Q) are lower triangular,
+// so a row of axis block b of M = [F Sx, sqrt(Q)] is zero in every column
+// of a later axis block, in both halves. Order M's columns by axis block,
+//   [F Sx cols of block 0, sqrt(Q) cols of block 0, F Sx cols of block 1, ...]
+// (a column permutation leaves M M^T, hence the factor, unchanged): row j
+// is then zero past column e_j = 2d (j/d + 1), a staircase profile with e_j
+// non-decreasing in j. The reflection that clears row j past its diagonal
+// acts on columns j .. e_j - 1 only, and cannot fill a zero of a later row
+// (its columns end at e_j or later), so the zeros past each row's e_j are
+// never touched. CA-2D (d = 3, n = 6): reflections of length 6, 5, 4, 9, 8, 7
+// instead of 12 .. 7, about 215 multiply-adds against 377 for the dense
+// 6 x 12 triangularisation. The lengths are compile-time constants
+// (structure::static_for), so each dot product and update is a fixed-size,
+// vectorised Eigen segment with no loop counter left at -O2.
+//
+// The factor of Q = blkdiag(Q1, ..., Q1) is blkdiag(chol(Q1), ...): one d x d
+// semidefinite Cholesky (block_sqrt_process_noise()), bit for bit the
+// blocks of the n x n one.
+#pragma once
+
+#include "kestrel/filters/sigma_points.hpp"
+#include "kestrel/filters/structure.hpp"
+#include "kestrel/math/cholesky_update.hpp"
+#include "kestrel/math/eigen.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
+
+namespace kestrel::sigma {
+
+/// Lower-triangular factor of the model's Q(dt) = blkdiag(Q1, ..., Q1),
+/// Q1 = axis_process_noise(dt), from one d x d semidefinite Cholesky of Q1
+/// with the n x n matrix's zero-pivot tolerance (so the result is the n x n
+/// cholesky_semidefinite(Q) exactly: the off-block products it skips are 0).
+/// @return kOk; kNonFinite (NaN/Inf in Q1); kNotPositiveDefinite (Q1
+///         indefinite). Sq is written only on kOk.
+template <BlockDiagonalMotion M>
+[[nodiscard]] Status block_sqrt_process_noise(const M& motion, typename M::Scalar dt, typename M::Cov& Sq) {
+  using S = typename M::Scalar;
+  constexpr int d = M::kAxisDim;
+  constexpr int kAxes = M::kStateDim / d;
+  const Mat<S, d, d> Q1 = motion.axis_process_noise(dt);
+  if (!all_finite(Q1)) return Status::kNonFinite;
+  Mat<S, d, d> L1;
+  const Status st = cholesky_semidefinite<S, d, M::kStateDim>(Q1, L1);
+  if (st != Status::kOk) return st;
+  Sq.setZero();
+  structure::static_for<0, kAxes>([&](auto ia) {
+    constexpr int i = decltype(ia)::value;
+    Sq.template block<d, d>(i * d, i * d) = L1;
+  });
+  return Status::kOk;
+}
+
+/// Lower-triangular Sx- (non-negative diagonal) with
+/// Sx- Sx-^T = F Sx Sx^T F^T + Sq Sq^T, F = blkdiag(axis_transition(dt), ...),
+/// for lower-triangular Sx and Sq: the triangularisation qr{[F Sx, Sq]} on
+/// the staircase profile of the header note.
+template <BlockDiagonalMotion M>
+typename M::Cov affine_sqrt_time_update(const M& motion, const typename M::Cov& Sx, const typename M::Cov& Sq,
+                                        typename M::Scalar dt) {
+  using S = typename M::Scalar;
+  using T = ScalarTraits<S>;
+  constexpr int n = M::kStateDim;
+  constexpr int d = M::kAxisDim;
+  // B = M^T, M's columns in axis-block order: column r of B is row r of M
+  // (Householder on B's columns clears M's rows). Entries of column r past
+  // its profile end are never read, so never written.
+  const typename M::Cov FS = affine_sqrt(motion, Sx, dt);
+  Mat<S, 2 * n, n> B;
+  structure::static_for<0, n>([&](auto ra) {
+    constexpr int r = decltype(ra)::value;
+    structure::static_for<0, r / d + 1>([&](auto ba) {
+      constexpr int b = decltype(ba)::value;
+      B.col(r).template segment<d>(2 * d * b) = FS.row(r).template segment<d>(d * b).transpose();
+      B.col(r).template segment<d>(2 * d * b + d) = Sq.row(r).template segment<d>(d * b).transpose();
+    });
+  });
+  structure::static_for<0, n>([&](auto ja) {
+    constexpr int j = decltype(ja)::value;
+    constexpr int kLen = 2 * d * (j / d + 1) - j;  // e_j - j
+    auto v = B.col(j).template segment<kLen>(j);
+    const S norm2 = v.squaredNorm();
+    if (!(norm2 > S(0))) return;  // row j already zero past its diagonal
+    const S bjj = v(0);
+    // alpha takes the sign opposite to b_jj, so v_0 = b_jj - alpha does not cancel.
+    const S alpha = bjj < S(0) ? T::sqrt(norm2) : -T::sqrt(norm2);
+    v(0) = bjj - alpha;
+    // H = I - 2 v v^T / (v^T v) with v^T v = 2 (norm2 - b_jj alpha) > 0
+    // (alpha^2 = norm2 and b_jj alpha <= 0): one division per reflection.
+    const S inv = S(1) / (norm2 - bjj * alpha);
+    structure::static_for<j + 1, n>([&](auto ca) {
+      constexpr int c = decltype(ca)::value;
+      auto col = B.col(c).template segment<kLen>(j);
+      col -= (v.dot(col) * inv) * v;
+    });
+    B(j, j) = alpha;
+  });
+  // L = R^T, each row of R flipped to a non-negative diagonal (R^T R unchanged).
+  typename M::Cov L = M::Cov::Zero();
+  structure::static_for<0, n>([&](auto ra) {
+    constexpr int r = decltype(ra)::value;
+    const S sign = B(r, r) < S(0) ? S(-1) : S(1);
+    L.col(r).template tail<n - r>() = sign * B.row(r).template tail<n - r>().transpose();
+  });
+  return L;
+}
+
+}  // namespace kestrel::sigma
