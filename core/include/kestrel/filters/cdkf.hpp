@@ -80,7 +80,16 @@ class Cdkf {
 
   /// Predict by dt seconds with the model's process noise Q(dt).
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
-  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+  [[nodiscard]] Status predict(Scalar dt) {
+    if constexpr (kAffinePredict) {
+      // The model's Q added per axis block (sigma_points.hpp): the n x n Q
+      // is never formed. P_ is positive definite (reset() and update() check it).
+      if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
+      return commit_prediction(motion_.propagate(x_, dt), sigma::affine_covariance(motion_, P_, dt));
+    } else {
+      return predict(dt, motion_.process_noise(dt));
+    }
+  }
 
   /// Predict by dt seconds with an explicit process noise Q.
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
@@ -105,10 +114,7 @@ class Cdkf {
                                             D1, D2);
       P = symmetrised(D1 * D1.transpose() * w_.wc1 + D2 * D2.transpose() * w_.wc2 + Q);
     }
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
-    x_ = x;
-    P_ = P;
-    return Status::kOk;
+    return commit_prediction(x, P);
   }
 
   /// Innovation of z against the current (predicted) state with the model's R.
@@ -189,6 +195,14 @@ class Cdkf {
     if (!all_finite(m.S) || !all_finite(m.Pxz) || !all_finite(m.nu)) return Status::kNonFinite;
     m.llt_S.compute(m.S);
     if (m.llt_S.info() != Eigen::Success) return Status::kNotPositiveDefinite;
+    return Status::kOk;
+  }
+
+  /// Commit a predicted x- and P-, or return kNonFinite and keep the filter.
+  Status commit_prediction(const State& x, const Cov& P) {
+    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    x_ = x;
+    P_ = P;
     return Status::kOk;
   }
 

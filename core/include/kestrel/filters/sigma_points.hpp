@@ -40,9 +40,12 @@
 //   - square root: qr{[F Sx, sqrt(Q)]} is a factor of F Sx Sx^T F^T + Q, the
 //     same P- (and the SR-UKF's rank-1 update by Y_0 - x- = 0 is void).
 // So with such a model the filters take P- = F P F^T + Q (structure.hpp's
-// per-axis kernels) or Sx- = qr{[F Sx, sqrt(Q)]} (affine_sqrt() below) and
-// x- = f(x), and draw no points for the time update: 2n + 1 propagations,
-// a Cholesky of P and 2n + 1 outer products (or a wider QR) saved. The
+// per-axis kernels) or Sx- = qr{[F Sx, sqrt(Q)]} (affine_sqrt() below, the
+// triangularisation on the compound matrix's block profile in
+// sqrt_time_update.hpp) and x- = f(x), and draw no points for the time
+// update: 2n + 1 propagations, a Cholesky of P and 2n + 1 outer products
+// (or a wider QR) saved. With the model's own Q = blkdiag(Q1, ...) (predict(dt)),
+// Q is added, or factored, per axis block too. The
 // results differ from the point form by round-off only (tested to 1e-9
 // relative against Dense<M>, tests/core/filters/structured_sigma_*). The
 // measurement update keeps its points (h is not affine) but skips
@@ -154,6 +157,17 @@ typename M::Cov affine_covariance(const M& motion, const typename M::Cov& P, con
                                   typename M::Scalar dt) {
   typename M::Cov out = structure::transform_covariance(motion, P, dt);
   structure::add_symmetrised(out, Q);
+  return out;
+}
+
+/// F P F^T + blkdiag(Q1, ..., Q1) with the model's own Q1 =
+/// axis_process_noise(dt), per axis block (structure.hpp): the same matrix
+/// as affine_covariance(motion, P, process_noise(dt), dt), bit for bit, with
+/// no n x n Q formed and no zero block of it added.
+template <BlockDiagonalMotion M>
+typename M::Cov affine_covariance(const M& motion, const typename M::Cov& P, typename M::Scalar dt) {
+  typename M::Cov out = structure::transform_covariance(motion, P, dt);
+  structure::add_process_noise(motion, out, dt);
   return out;
 }
 

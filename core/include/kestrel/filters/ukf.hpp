@@ -82,7 +82,16 @@ class Ukf {
 
   /// Predict by dt seconds with the model's process noise Q(dt).
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
-  [[nodiscard]] Status predict(Scalar dt) { return predict(dt, motion_.process_noise(dt)); }
+  [[nodiscard]] Status predict(Scalar dt) {
+    if constexpr (kAffinePredict) {
+      // The model's Q added per axis block (sigma_points.hpp): the n x n Q
+      // is never formed. P_ is positive definite (reset() and update() check it).
+      if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
+      return commit_prediction(motion_.propagate(x_, dt), sigma::affine_covariance(motion_, P_, dt));
+    } else {
+      return predict(dt, motion_.process_noise(dt));
+    }
+  }
 
   /// Predict by dt seconds with an explicit process noise Q.
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
@@ -104,10 +113,7 @@ class Ukf {
       x = sigma::state_mean(Y, w_.wi);
       P = symmetrised(weighted_outer(Y, x) + Q);
     }
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
-    x_ = x;
-    P_ = P;
-    return Status::kOk;
+    return commit_prediction(x, P);
   }
 
   /// Innovation of z against the current (predicted) state with the model's R.
@@ -207,6 +213,14 @@ class Ukf {
       P += d * d.transpose() * w_.wi;
     }
     return P;
+  }
+
+  /// Commit a predicted x- and P-, or return kNonFinite and keep the filter.
+  Status commit_prediction(const State& x, const Cov& P) {
+    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    x_ = x;
+    P_ = P;
+    return Status::kOk;
   }
 
   Status fail(Status s) {
