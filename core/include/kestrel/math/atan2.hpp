@@ -1,6 +1,6 @@
 // Deterministic atan2 for float and double, for the hot loops that evaluate
 // a bearing per particle (the CRPF's cost and risk, paper 001 eqs. 5-6, via
-// PolarRadar::residual_of_state). Two reasons to own it, as prng.hpp owns
+// PolarRadar::particle_residual). Two reasons to own it, as prng.hpp owns
 // log/exp: libm's atan2 differs between C libraries (glibc, newlib), so a
 // CRPF run replayed on a board gave other bits than on the host; and glibc's
 // correctly rounded atan2 costs about 150 instructions plus a call, which
@@ -11,11 +11,11 @@
 // one of three reductions maps it into |u| <= 7/16 with a single division
 // formed from a and b directly (no rounded y/x first): u = t, or
 // u = (2t - 1)/(t + 2) about atan(1/2), or u = (t - 1)/(t + 1) about pi/4.
-// atan(u) = u - u*s(u^2) with fdlibm's 11-term odd polynomial (its error
-// below 2^-71 on |u| <= 7/16). The octant and the sign of x give
+// atan(u) = u - u*s(u^2) with fdlibm's 11-term odd polynomial, made for
+// |u| <= 7/16. The octant and the sign of x give
 // atan2 = C + sign * atan(u) with C one of nine constants (0, atan(1/2), pi/4,
 // pi/2, atan 2, pi - atan 2, 3pi/4, pi - atan(1/2), pi), each stored as a
-// hi + lo pair so the one final rounding dominates: tested within 2 ulp of
+// hi + lo pair so the one final rounding dominates: tested within 1 ulp of
 // std::atan2 (glibc, correctly rounded) on a dense grid
 // (tests/core/math/atan2_test.cpp). The sign of y is copied last.
 //
@@ -29,7 +29,8 @@
 // contract in C++ even under -std=c++20 when the target has an FMA
 // (checked: -march=haswell changes the golden hash of atan2_test.cpp;
 // plain x86-64 has no FMA, Cortex-M4F/M7 do), so a board build needs
-// -ffp-contract=off for the same bits (prng.hpp's log/exp likewise).
+// -ffp-contract=off for the same bits (prng.hpp's log/exp would be in the
+// same position).
 // No loop, no table lookup beyond the 12 constants, no libm call.
 #pragma once
 
