@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <Eigen/LU>
 
@@ -209,11 +210,11 @@ SCENARIO("Block-wise F P F^T equals the dense product") {
   }
 }
 
-SCENARIO("Sparse-Jacobian products, gain and Joseph update equal the dense ones") {
+SCENARIO("Sparse-Jacobian products and the whitened update equal the dense ones") {
   TestRng rng;
   TwoColumnMeasurement h;
   for (int trial = 0; trial < 20; ++trial) {
-    GIVEN("random P, Hc, R and an arbitrary (non-optimal) gain") {
+    GIVEN("random P, Hc, R and a residual") {
       for (int r = 0; r < 3; ++r) {
         for (int c = 0; c < 2; ++c) h.Hc(r, c) = rng.next();
       }
@@ -232,40 +233,71 @@ SCENARIO("Sparse-Jacobian products, gain and Joseph update equal the dense ones"
       CHECK(exactly_symmetric(HPHt));
 
       const Mat<double, 3, 3> S = HPHt_dense + R;
-      Mat<double, 6, 3> K;
-      Mat<double, 3, 3> Sinv;
-      REQUIRE(kestrel::structure::gain(PHt_dense, S, K, Sinv));
       const Mat<double, 3, 3> Sinv_dense = S.inverse();
       const Mat<double, 6, 3> K_dense = PHt_dense * Sinv_dense;
-      CHECK((Sinv - Sinv_dense).cwiseAbs().maxCoeff() <= 1e-12 * Sinv_dense.cwiseAbs().maxCoeff());
-      CHECK((K - K_dense).cwiseAbs().maxCoeff() <= 1e-12 * K_dense.cwiseAbs().maxCoeff());
+      const Vec<double, 3> nu(rng.next(), rng.next(), rng.next());
+      const double d2_dense = nu.dot(Sinv_dense * nu);
 
-      Vec<double, 3> nu(rng.next(), rng.next(), rng.next());
       double d2 = -1.0;
       REQUIRE(kestrel::structure::nis(S, nu, d2));
-      const double d2_dense = nu.dot(Sinv_dense * nu);
       CHECK(std::abs(d2 - d2_dense) <= 1e-12 * d2_dense);
 
-      // Joseph form with a perturbed gain: the expanded form is the same
-      // matrix for any K, not only the optimal one.
-      Mat<double, 6, 3> Kp = K_dense;
-      for (int r = 0; r < 6; ++r) Kp(r, 0) *= 1.0 + 0.1 * rng.next();
-      const Mat<double, 6, 6> A = Mat<double, 6, 6>::Identity() - Kp * H;
-      const Mat<double, 6, 6> joseph_dense = A * P * A.transpose() + Kp * R * Kp.transpose();
-      const auto joseph = kestrel::structure::joseph_update(P, Kp, PHt_dense, S);
-      CHECK(cov_rel_diff<6>(joseph, joseph_dense) < 1e-10);
-      CHECK(exactly_symmetric(joseph));
+      // The whitened update equals the textbook one: U w = K nu, |w|^2 the
+      // NIS, and P - U U^T the Joseph form of the optimal gain.
+      Mat<double, 6, 3> U;
+      Vec<double, 3> w;
+      REQUIRE(kestrel::structure::whitened_gain(PHt_dense, S, nu, U, w));
+      const Vec<double, 6> Knu = K_dense * nu;
+      CHECK((U * w - Knu).cwiseAbs().maxCoeff() <= 1e-12 * Knu.cwiseAbs().maxCoeff());
+      CHECK(std::abs(w.squaredNorm() - d2_dense) <= 1e-12 * d2_dense);
+      const Mat<double, 6, 6> A = Mat<double, 6, 6>::Identity() - K_dense * H;
+      const Mat<double, 6, 6> joseph_dense = A * P * A.transpose() + K_dense * R * K_dense.transpose();
+      const auto P_post = kestrel::structure::symmetric_downdate(P, U);
+      CHECK(cov_rel_diff<6>(P_post, joseph_dense) < 1e-10);
+      CHECK(exactly_symmetric(P_post));
     }
   }
   GIVEN("an S that is not positive definite") {
     Mat<double, 2, 2> S;
     S << 1.0, 2.0, 2.0, 1.0;
-    Mat<double, 6, 2> K;
-    Mat<double, 2, 2> Sinv;
-    double d2 = 0.0;
-    THEN("gain() and nis() refuse it") {
-      CHECK_FALSE(kestrel::structure::gain(Mat<double, 6, 2>(Mat<double, 6, 2>::Ones()), S, K, Sinv));
+    Mat<double, 6, 2> U = Mat<double, 6, 2>::Constant(7.0);
+    Vec<double, 2> w = Vec<double, 2>::Constant(7.0);
+    double d2 = 7.0;
+    THEN("whitened_gain() and nis() refuse it and write nothing") {
+      CHECK_FALSE(kestrel::structure::whitened_gain(Mat<double, 6, 2>(Mat<double, 6, 2>::Ones()), S,
+                                                    Vec<double, 2>(1.0, 1.0), U, w));
       CHECK_FALSE(kestrel::structure::nis(S, Vec<double, 2>(1.0, 1.0), d2));
+      CHECK(U == Mat<double, 6, 2>::Constant(7.0));
+      CHECK(w == Vec<double, 2>::Constant(7.0));
+      CHECK(d2 == 7.0);
     }
   }
+}
+
+SCENARIO("all_finite_mirrored finds a non-finite coefficient anywhere in a mirrored matrix") {
+  TestRng rng;
+  const auto P = random_spd<6>(rng);
+  const Mat<float, 6, 6> Pf = P.cast<float>();
+  CHECK(kestrel::structure::all_finite_mirrored(P));
+  CHECK(kestrel::structure::all_finite_mirrored(Pf));
+  const double bad[3] = {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                         -std::numeric_limits<double>::infinity()};
+  for (int c = 0; c < 6; ++c) {
+    for (int r = 0; r <= c; ++r) {
+      for (const double b : bad) {
+        Mat<double, 6, 6> Q = P;
+        Q(r, c) = b;
+        Q(c, r) = b;
+        Mat<float, 6, 6> Qf = Pf;
+        Qf(r, c) = static_cast<float>(b);
+        Qf(c, r) = static_cast<float>(b);
+        INFO("entry (" << r << ", " << c << ") = " << b);
+        CHECK_FALSE(kestrel::structure::all_finite_mirrored(Q));
+        CHECK_FALSE(kestrel::structure::all_finite_mirrored(Qf));
+      }
+    }
+  }
+  // Huge but finite entries do not overflow the reduction (terms are zeros).
+  const Mat<double, 6, 6> huge = Mat<double, 6, 6>::Constant(std::numeric_limits<double>::max());
+  CHECK(kestrel::structure::all_finite_mirrored(huge));
 }

@@ -1,8 +1,9 @@
 // Extended Kalman filter on fixed-size storage (SPEC section 5; paper 000
-// section 2-1 and paper 001 section 2 for the equations). The update uses the
-// Joseph form P+ = (I - K H) P (I - K H)^T + K R K^T, which stays symmetric
-// positive semi-definite under round-off, then symmetrises. With a linear
-// motion and measurement model it is exactly the linear Kalman filter.
+// section 2-1 and paper 001 section 2 for the equations). The dense update
+// uses the Joseph form P+ = (I - K H) P (I - K H)^T + K R K^T, then
+// symmetrises; the structured update (below) computes the same matrix as
+// P - U U^T. With a linear motion and measurement model it is exactly the
+// linear Kalman filter.
 //
 // Every public operation computes into locals and commits only on success:
 // a non-finite input or result returns kNonFinite, a failed Cholesky of S
@@ -26,13 +27,30 @@
 // Model structure (kestrel/filters/structure.hpp, issue 9) is used when the
 // models expose it, detected at compile time: a block-diagonal motion model
 // gets F P F^T and Q per axis block; a measurement model with few non-zero
-// Jacobian columns gets P H^T and H P H^T from those columns, the Joseph
-// form expanded on the upper triangle, and one linearisation (h(x), the
-// Jacobian columns, H P H^T) shared by every innovation() and the update
-// until x or P changes. Without the structure (or with Dense<M> models) the
-// dense products below run: the baseline and the test oracle.
+// Jacobian columns gets P H^T and H P H^T from those columns, one
+// linearisation (h(x), the Jacobian columns, H P H^T) shared by every
+// innovation() and the update until x or P changes, and the update through
+// the Cholesky factor of S = L L^T: U = P H^T L^-T, w = L^-1 nu,
+// x+ = x + U w, P+ = P - U U^T on the upper triangle, mirrored, NIS = |w|^2
+// (neither S^-1 nor K is formed). Without the structure (or with Dense<M>
+// models) the dense products below run, Joseph form included: the baseline
+// and the test oracle, equal to the structured path to 1e-9 relative.
+//
+// Why P - U U^T and not the Joseph form on the structured path: the
+// Joseph form's protection is the product (I - K H) P (I - K H)^T, positive
+// semi-definite by construction and first-order insensitive to an error in
+// K. The product costs two 6x6 triple products; expanded to be cheap
+// (P - K PHt^T - PHt K^T + K S K^T) it is no longer a product, so the
+// positive-semi-definiteness by construction is gone, and what remains, the
+// insensitivity to K, only matters for a gain off by more than round-off
+// (fixed or suboptimal gains), which no filter here uses. P - U U^T has the
+// same round-off class and half the work. Measured, float against a double
+// reference over long CA-2D/polar runs with very precise plots
+// (docs/performance.md, "Update form"), the two forms stay equally close
+// to the reference.
 #pragma once
 
+#include <concepts>
 #include <cstdint>
 #include <type_traits>
 
@@ -48,7 +66,7 @@ namespace kestrel {
 
 /// How Ekf folds a measurement in (equal results up to round-off).
 enum class EkfUpdateForm : std::uint8_t {
-  kBatch,               ///< Cholesky of S, K = P H^T S^-1, Joseph form.
+  kBatch,               ///< Cholesky of S; Joseph form (dense) or P - U U^T (structured).
   kSequentialWhitened,  ///< Whitened scalar channel updates, every divisor >= 1.
 };
 
@@ -126,6 +144,22 @@ class Ekf {
     }
   }
 
+  /// Predict by dt seconds with the process noise kron(M, Q1(dt)): axis
+  /// block (i, j) of Q is M(i, j) times the model's per-axis Q1 (per-axis
+  /// shaping of adaptive filters, R2-AEKF eq. 18), added per axis block.
+  /// Block-diagonal motion models only (the dense path builds the full Q
+  /// and calls predict(dt, Q)).
+  /// @return kOk; kNonFinite (filter unchanged).
+  template <class M = Motion>
+    requires kBlockPredict && std::same_as<M, Motion>
+  [[nodiscard]] Status predict_axis_mixed(Scalar dt,
+                                          const Mat<Scalar, M::kStateDim / M::kAxisDim, M::kStateDim / M::kAxisDim>& mix) {
+    if (!all_finite(mix)) return Status::kNonFinite;
+    Cov P = structure::transform_covariance(motion_, P_, dt);
+    structure::add_mixed_process_noise(motion_, P, dt, mix);
+    return commit_prediction(motion_.propagate(x_, dt), P);
+  }
+
   /// Innovation of z against the current (predicted) state with the model's R.
   /// Pure: the gate uses it before deciding to update.
   Innov innovation(const MeasVec& z) const { return innovation(z, measurement_.noise()); }
@@ -175,7 +209,7 @@ class Ekf {
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z) { return update(z, measurement_.noise()); }
 
-  /// Update with z and an explicit R (Joseph form; see kForm).
+  /// Update with z and an explicit R (see kForm and the header comment).
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
     if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
@@ -226,8 +260,9 @@ class Ekf {
   }
 
   /// Batch form on the non-zero Jacobian columns (structure.hpp): the
-  /// shared linearisation, K = P H^T S^-1 through an unrolled Cholesky of S,
-  /// the Joseph form expanded on the upper triangle.
+  /// shared linearisation, then the update through the Cholesky factor of
+  /// S (structure::whitened_gain): x + U w and P - U U^T on the upper
+  /// triangle, with U = P H^T L^-T and w = L^-1 nu (header comment).
   [[nodiscard]] Status update_structured(const MeasVec& z, const MeasCov& R)
     requires kSparseUpdate
   {
@@ -237,19 +272,19 @@ class Ekf {
     structure::add_symmetrised(S, R);
     if (!all_finite(lin.J.Hc) || !all_finite(nu) || !all_finite(S)) return fail(Status::kNonFinite);
     const Mat<Scalar, kStateDim, kMeasDim> PHt = lin.J.p_ht(P_);
-    Mat<Scalar, kStateDim, kMeasDim> K;
-    MeasCov Sinv;
-    if (!structure::gain(PHt, S, K, Sinv)) return fail(Status::kNotPositiveDefinite);
-    const State x = x_ + K * nu;
-    const Cov P = structure::joseph_update(P_, K, PHt, S);
-    if (!all_finite(x) || !all_finite(P)) return fail(Status::kNonFinite);
+    Mat<Scalar, kStateDim, kMeasDim> U;
+    MeasVec w;
+    if (!structure::whitened_gain(PHt, S, nu, U, w)) return fail(Status::kNotPositiveDefinite);
+    const State x = x_ + U * w;
+    const Cov P = structure::symmetric_downdate(P_, U);
+    if (!all_finite(x) || !structure::all_finite_mirrored(P)) return fail(Status::kNonFinite);
 
     x_ = x;
     P_ = P;
     invalidate_linearisation();
     diag_.innovation = nu;
     diag_.innovation_variance = S.diagonal();
-    diag_.nis = nu.dot(Sinv * nu);
+    diag_.nis = w.squaredNorm();
     diag_.fused = true;
     diag_.status = Status::kOk;
     return Status::kOk;
@@ -386,8 +421,10 @@ class Ekf {
   const Diagnostics& diagnostics() const { return diag_; }
 
  private:
+  /// P is exactly symmetric on every path (the block kernels mirror, the
+  /// dense one symmetrises), so its upper triangle decides its finiteness.
   [[nodiscard]] Status commit_prediction(const State& x, const Cov& P) {
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    if (!all_finite(x) || !structure::all_finite_mirrored(P)) return Status::kNonFinite;
     x_ = x;
     P_ = P;
     invalidate_linearisation();

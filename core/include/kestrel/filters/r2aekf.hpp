@@ -18,13 +18,14 @@
 //     normalised by its predicted spread, so they hold at any aspect angle.
 // Order of one step (SPEC 5, steps 1-7): predict with Q_(k-1); innovation
 // with R_(k-1); per-channel NIS; R law -> R_k; S with R_k, robust gating;
-// Joseph update (Ekf::update); indicators; Q scales -> Q_k for the next
+// EKF update (Ekf::update); indicators; Q scales -> Q_k for the next
 // prediction. Everything lives in fixed-size storage; no allocation, no
 // exceptions; float and double (any scalar with ScalarTraits).
 #pragma once
 
 #include <concepts>
 #include <cstdint>
+#include <utility>
 
 #include "kestrel/association/chi_square.hpp"
 #include "kestrel/filters/ekf.hpp"
@@ -263,7 +264,12 @@ class R2Aekf {
   /// @return kOk; kNonFinite (filter unchanged).
   [[nodiscard]] Status predict(Scalar dt) {
     cache_valid_ = false;
-    const Status s = ekf_.predict(dt, process_noise(dt));
+    Status s;
+    if constexpr (Base::kBlockPredict) {
+      s = ekf_.predict_axis_mixed(dt, ad_.q_mix);  // kron(M, Q1D) per axis block
+    } else {
+      s = ekf_.predict(dt, process_noise(dt));
+    }
     if (s == Status::kOk) dt_ = dt;
     return s;
   }
@@ -288,7 +294,9 @@ class R2Aekf {
     constexpr int kB = Measurement::kBearing;
     const Config& c = config_;
     const bool paper = c.mode == R2AekfMode::kPaper;
-    const Measurement& meas = ekf_.measurement();
+    // Through the const accessor: Ekf's mutable measurement() drops its
+    // shared linearisation, which the update below reuses.
+    const Measurement& meas = std::as_const(ekf_).measurement();
 
     // Step 1, eq. 7: innovation and S_pre with the previous step's R. The
     // tracker's gate has usually just computed exactly this (innovation(z)
@@ -336,7 +344,7 @@ class R2Aekf {
     const MeasCov R_used = a.robust_gated ? MeasCov(R_k * c.rho) : R_k;
     if (a.robust_gated) S += R_k * (c.rho - Scalar(1));
 
-    // The Joseph-form update of the EKF with the final R.
+    // The EKF update with the final R.
     const Scalar px = ekf_.x()(Layout::kX);
     const Scalar py = ekf_.x()(Layout::kY);
     const Status s = ekf_.update(z, R_used);
@@ -399,7 +407,7 @@ class R2Aekf {
   /// Scales, indicators and per-channel statistics after the last update.
   const Adaptation& adaptation() const { return ad_; }
   const Config& config() const { return config_; }
-  /// The underlying EKF (its diagnostics() describe the last Joseph update).
+  /// The underlying EKF (its diagnostics() describe the last update).
   const Base& ekf() const { return ekf_; }
   const Diagnostics& diagnostics() const { return ekf_.diagnostics(); }
   const Motion& motion() const { return ekf_.motion(); }
