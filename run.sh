@@ -17,6 +17,7 @@ PACKAGES=(
   libbenchmark-dev libcli11-dev nlohmann-json3-dev
   python3 python3-matplotlib
   valgrind
+  clang libclang-rt-14-dev
 )
 
 install_deps() {
@@ -49,7 +50,13 @@ case "${1:-}" in
   test)
     install_deps
     build_host
+    # Every Catch2 case a binary lists must run exactly once under CTest
+    # (tools/ci/check_cases_ran.py); checked on full runs only.
+    rm -rf build/host-release/catch_cases/ran && mkdir -p build/host-release/catch_cases/ran
     ctest --preset host-release "${@:2}"
+    if (($# == 1)); then
+      python3 tools/ci/check_cases_ran.py build/host-release
+    fi
     ;;
   *)
     echo "usage: bash run.sh sim|test [extra args]" >&2

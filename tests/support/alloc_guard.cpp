@@ -1,6 +1,11 @@
-// Counting replacements of the global allocation functions. operator new is
-// replaced portably; malloc/calloc/realloc are interposed through glibc's
-// __libc_* entry points, except under AddressSanitizer, which must own them.
+// Counting of every heap allocation the tests make. Three ways, chosen at
+// compile time:
+//  - glibc, no sanitizer: malloc/calloc/realloc interposed through glibc's
+//    __libc_* entry points, and operator new replaced;
+//  - AddressSanitizer: ASan owns malloc and every operator new/delete (and
+//    checks that each allocation is freed by its matching function), so
+//    nothing is replaced; its allocator hook counts every allocation;
+//  - otherwise: operator new replaced only.
 #include "support/alloc_guard.hpp"
 
 #include <Eigen/Core>
@@ -13,19 +18,33 @@ std::atomic<std::size_t> g_allocations{0};
 }
 
 #if defined(__SANITIZE_ADDRESS__)
-#define KESTREL_TEST_INTERPOSE_MALLOC 0
+#define KESTREL_TEST_UNDER_ASAN 1
 #elif defined(__has_feature)
 #if __has_feature(address_sanitizer)
-#define KESTREL_TEST_INTERPOSE_MALLOC 0
+#define KESTREL_TEST_UNDER_ASAN 1
 #endif
 #endif
-#ifndef KESTREL_TEST_INTERPOSE_MALLOC
-#if defined(__GLIBC__)
+#ifndef KESTREL_TEST_UNDER_ASAN
+#define KESTREL_TEST_UNDER_ASAN 0
+#endif
+
+#if !KESTREL_TEST_UNDER_ASAN && defined(__GLIBC__)
 #define KESTREL_TEST_INTERPOSE_MALLOC 1
 #else
 #define KESTREL_TEST_INTERPOSE_MALLOC 0
 #endif
-#endif
+
+#if KESTREL_TEST_UNDER_ASAN
+// The sanitizer runtime's hook interface (sanitizer/allocator_interface.h,
+// which GCC does not install): called on every allocation and free.
+extern "C" int __sanitizer_install_malloc_and_free_hooks(void (*malloc_hook)(const volatile void*, std::size_t),
+                                                         void (*free_hook)(const volatile void*));
+namespace {
+void count_allocation(const volatile void*, std::size_t) { g_allocations.fetch_add(1, std::memory_order_relaxed); }
+void ignore_free(const volatile void*) {}
+[[maybe_unused]] const int g_hooks_installed = __sanitizer_install_malloc_and_free_hooks(count_allocation, ignore_free);
+}  // namespace
+#else
 
 #if KESTREL_TEST_INTERPOSE_MALLOC
 extern "C" {
@@ -61,6 +80,8 @@ void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
+#endif  // KESTREL_TEST_UNDER_ASAN
+
 namespace kestrel::test {
 
 AllocationGuard::AllocationGuard() : start_(g_allocations.load()) {
@@ -69,6 +90,6 @@ AllocationGuard::AllocationGuard() : start_(g_allocations.load()) {
 AllocationGuard::~AllocationGuard() { Eigen::internal::set_is_malloc_allowed(true); }
 std::size_t AllocationGuard::allocations() const { return g_allocations.load() - start_; }
 std::size_t allocation_count() { return g_allocations.load(); }
-bool malloc_is_counted() { return KESTREL_TEST_INTERPOSE_MALLOC != 0; }
+bool malloc_is_counted() { return KESTREL_TEST_INTERPOSE_MALLOC != 0 || KESTREL_TEST_UNDER_ASAN != 0; }
 
 }  // namespace kestrel::test

@@ -33,6 +33,8 @@ enum class Status : std::uint8_t {
   kUnderdetermined,      ///< Fewer usable measurements than the unknowns need.
   kNoConvergence,        ///< Iteration cap reached, or no solution explains the data.
   kAmbiguous,            ///< Two or more distinct solutions fit the data equally well.
+  // Frame level, added after the solvers so earlier values keep their numbers.
+  kTimeJumpedForward,    ///< Frame time later than the last accepted one by more than the limit.
 };
 
 /// Short stable name of a status, for host logs and test messages.
@@ -58,12 +60,13 @@ constexpr const char* to_string(Status s) {
     case Status::kUnderdetermined: return "underdetermined";
     case Status::kNoConvergence: return "no_convergence";
     case Status::kAmbiguous: return "ambiguous";
+    case Status::kTimeJumpedForward: return "time_jumped_forward";
   }
   return "unknown";
 }
 
 /// Number of distinct Status values (for per-status counters).
-inline constexpr std::uint8_t kStatusCount = static_cast<std::uint8_t>(Status::kAmbiguous) + 1;
+inline constexpr std::uint8_t kStatusCount = static_cast<std::uint8_t>(Status::kTimeJumpedForward) + 1;
 
 /// A status plus a value that is meaningful only when the status is kOk.
 /// T must be default-constructible; no exceptions, no heap.

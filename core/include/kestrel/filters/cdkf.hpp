@@ -28,6 +28,7 @@
 #include "kestrel/filters/sigma_points.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
+#include "kestrel/math/positive_definite.hpp"
 #include "kestrel/models/concepts.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
@@ -146,7 +147,7 @@ class Cdkf {
     const Mat<Scalar, kStateDim, kMeasDim> K = sigma::gain(m.llt_S, m.Pxz);
     const State x = x_ + K * m.nu;
     const Cov P = symmetrised(P_ - K * m.S * K.transpose());
-    if (!all_finite(x) || !all_finite(P)) return fail(Status::kNonFinite);
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
     if (Eigen::LLT<Cov>(P).info() != Eigen::Success) return fail(Status::kNotPositiveDefinite);
     x_ = x;
     P_ = P;
@@ -200,7 +201,7 @@ class Cdkf {
 
   /// Commit a predicted x- and P-, or return kNonFinite and keep the filter.
   Status commit_prediction(const State& x, const Cov& P) {
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    if (const Status c = state_status(x, P); c != Status::kOk) return c;
     x_ = x;
     P_ = P;
     return Status::kOk;

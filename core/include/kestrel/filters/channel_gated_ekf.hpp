@@ -35,6 +35,7 @@
 #include "kestrel/filters/innovation.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
+#include "kestrel/math/positive_definite.hpp"
 #include "kestrel/models/concepts.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
@@ -111,11 +112,13 @@ class ChannelGatedEkf {
   }
 
   /// Set the state and covariance.
-  /// @return kOk; kNonFinite if any entry is NaN/Inf (filter unchanged).
+  /// @return kOk; kNonFinite if any entry is NaN/Inf, kNotPositiveDefinite
+  ///         if P is not (filter unchanged in both cases).
   [[nodiscard]] Status reset(const State& x, const Cov& P) {
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    const Cov Ps = symmetrised(P);
+    if (const Status c = state_status(x, Ps); c != Status::kOk) return c;
     x_ = x;
-    P_ = symmetrised(P);
+    P_ = Ps;
     return Status::kOk;
   }
 
@@ -129,7 +132,7 @@ class ChannelGatedEkf {
     const Cov F = motion_.jacobian(x_, dt);
     const State x = motion_.propagate(x_, dt);
     const Cov P = symmetrised(F * P_ * F.transpose() + Q);
-    if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    if (const Status c = state_status(x, P); c != Status::kOk) return c;
     x_ = x;
     P_ = P;
     return Status::kOk;
@@ -332,7 +335,7 @@ class ChannelGatedEkf {
     const State x = x_ + K * red.nu;
     const Cov A = Cov::Identity() - K * red.H;
     const Cov P = symmetrised(A * P_ * A.transpose() + K * red.R * K.transpose());
-    if (!all_finite(x) || !all_finite(P)) return fail(Status::kNonFinite);
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
     x_ = x;
     P_ = P;
     diag_.fused = keep;

@@ -7,7 +7,9 @@
 //
 // Every public operation computes into locals and commits only on success:
 // a non-finite input or result returns kNonFinite, a failed Cholesky of S
-// returns kNotPositiveDefinite, and in both cases x and P are unchanged.
+// or a P that is not positive definite (math/positive_definite.hpp, checked
+// on every P before it is committed) returns kNotPositiveDefinite, and in
+// every case x and P are unchanged.
 // The explicit-Q / explicit-R overloads are what adaptive filters (R2-AEKF)
 // build on, so no adaptive filter copies this update.
 //
@@ -58,6 +60,7 @@
 #include "kestrel/filters/structure.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
+#include "kestrel/math/positive_definite.hpp"
 #include "kestrel/models/concepts.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
@@ -109,17 +112,20 @@ class Ekf {
   }
 
   /// Set the state and covariance.
-  /// @return kOk; kNonFinite if any entry is NaN/Inf (filter unchanged).
+  /// @return kOk; kNonFinite if any entry is NaN/Inf, kNotPositiveDefinite
+  ///         if P is not (filter unchanged in both cases).
   [[nodiscard]] Status reset(const State& x, const Cov& P) {
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
+    const Cov Ps = symmetrised(P);
+    if (const Status c = state_status(x, Ps); c != Status::kOk) return c;
     x_ = x;
-    P_ = symmetrised(P);
+    P_ = Ps;
     invalidate_linearisation();
     return Status::kOk;
   }
 
   /// Predict by dt seconds with the model's process noise Q(dt).
-  /// @return kOk; kNonFinite (filter unchanged).
+  /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status predict(Scalar dt) {
     if constexpr (kBlockPredict) {
       // F P F^T and Q per axis block.
@@ -132,7 +138,7 @@ class Ekf {
   }
 
   /// Predict by dt seconds with an explicit process noise Q (adaptive filters).
-  /// @return kOk; kNonFinite (filter unchanged).
+  /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
     if constexpr (kBlockPredict) {
       Cov P = structure::transform_covariance(motion_, P_, dt);
@@ -246,7 +252,7 @@ class Ekf {
     const State x = x_ + K * nu;
     const Cov A = Cov::Identity() - K * H;
     const Cov P = symmetrised(A * P_ * A.transpose() + K * R * K.transpose());
-    if (!all_finite(x) || !all_finite(P)) return fail(Status::kNonFinite);
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
 
     x_ = x;
     P_ = P;
@@ -277,7 +283,7 @@ class Ekf {
     if (!structure::whitened_gain(PHt, S, nu, U, w)) return fail(Status::kNotPositiveDefinite);
     const State x = x_ + U * w;
     const Cov P = structure::symmetric_downdate(P_, U);
-    if (!all_finite(x) || !structure::all_finite_mirrored(P)) return fail(Status::kNonFinite);
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
 
     x_ = x;
     P_ = P;
@@ -330,9 +336,8 @@ class Ekf {
       }
     }
     const State x = x_ + dx;
-    if (!all_finite(x) || !all_finite(P) || !ScalarTraits<Scalar>::is_finite(nis)) {
-      return fail(Status::kNonFinite);
-    }
+    if (!ScalarTraits<Scalar>::is_finite(nis)) return fail(Status::kNonFinite);
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
     MeasVec s_diag;  // diag(H P H^T + R) before the update, for diagnostics
     for (int i = 0; i < kMeasDim; ++i) {
       const Eigen::Matrix<Scalar, 1, kStateDim> hP = H.row(i) * P_;
@@ -421,10 +426,8 @@ class Ekf {
   const Diagnostics& diagnostics() const { return diag_; }
 
  private:
-  /// P is exactly symmetric on every path (the block kernels mirror, the
-  /// dense one symmetrises), so its upper triangle decides its finiteness.
   [[nodiscard]] Status commit_prediction(const State& x, const Cov& P) {
-    if (!all_finite(x) || !structure::all_finite_mirrored(P)) return Status::kNonFinite;
+    if (const Status c = state_status(x, P); c != Status::kOk) return c;
     x_ = x;
     P_ = P;
     invalidate_linearisation();

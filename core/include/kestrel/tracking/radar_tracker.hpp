@@ -29,6 +29,9 @@ struct RadarTrackerParams {
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
   std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
   std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
+  std::int64_t max_predict_us = 10'000'000;    ///< Delete, not extrapolate, a track older than this (TrackerConfig).
+  std::int64_t max_forward_jump_us = 600'000'000;  ///< Refuse a frame this far ahead (TrackerConfig).
+  std::uint8_t resync_frames = 3;              ///< Consistent off-clock frames before a restart (TrackerConfig).
 };
 
 template <class Scalar>
@@ -78,6 +81,9 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const
   c.confirm_m = p.confirm_m;
   c.confirm_n = p.confirm_n;
   c.max_coast_misses = p.max_coast_misses;
+  c.max_predict_us = p.max_predict_us;
+  c.max_forward_jump_us = p.max_forward_jump_us;
+  c.resync_frames = p.resync_frames;
   c.max_position_variance_m2 = s.max_position_variance_m2;
   c.z_min << Scalar(0), -T::pi();
   c.z_max << s.max_range_m, T::pi();

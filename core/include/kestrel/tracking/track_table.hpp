@@ -98,7 +98,7 @@ class TrackTable {
   struct SlotRange {
     const std::uint64_t* words;
     SlotIterator begin() const { return SlotIterator(words); }
-    SlotIterator::End end() const { return {}; }
+    typename SlotIterator::End end() const { return {}; }
   };
 
   /// The active slots, in increasing index order (for (std::size_t i : table.active_slots())).

@@ -7,8 +7,23 @@
 // innovations per frame at most, no allocation, no recursion. The per-track
 // passes visit the active slots only (TrackTable::active_slots()).
 // A frame that fails validation (count over capacity, NaN/Inf, out of the
-// configured measurement box, time going backwards) is refused with its
-// status before anything changes, so nothing already tracked is lost.
+// configured measurement box, time going backwards or jumping forward past
+// the limit) is refused with its status before any track changes, so
+// nothing already tracked is lost.
+//
+// Time faults: a single far-off frame (a corrupted clock) is refused and
+// blocks nothing; a sensor whose clock really moved (a reset, a long stall)
+// sends a run of frames consistent with each other, and after
+// config.resync_frames of them the tracker restarts on the new clock
+// (tracks deleted, StepStats::resynced, resyncs()). Time differences are
+// computed without overflow for any int64 frame times.
+//
+// Covariance health: a filter that refuses a predict or update because P
+// would not be positive definite loses its track, as does a track whose
+// variances are not positive and finite, or one that would be predicted
+// over more than config.max_predict_us (a dropout): extrapolating that far
+// gives a P no plot can be folded into soundly in float. Its plots are free
+// to start a new track.
 #pragma once
 
 #include <bit>
@@ -21,6 +36,7 @@
 #include "kestrel/math/finite.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
+#include "kestrel/tracking/elapsed.hpp"
 #include "kestrel/tracking/measurement_scan.hpp"
 #include "kestrel/tracking/track.hpp"
 #include "kestrel/tracking/track_table.hpp"
@@ -58,7 +74,20 @@ struct TrackerConfig {
   Vec<Scalar, kMeasDim> z_min{};       ///< Smallest valid measurement, per channel.
   Vec<Scalar, kMeasDim> z_max{};       ///< Largest valid measurement, per channel.
   bool report_tentative = false;       ///< Also report tentative (initialised) tracks.
+  /// A track whose state is older than this at a frame is deleted, not
+  /// extrapolated (its plots restart it), us. Default 10 s: 20 frame periods
+  /// of a 0.5 s radar scan.
+  std::int64_t max_predict_us = 10'000'000;
+  /// A frame later than the last accepted one by more than this is refused
+  /// with kTimeJumpedForward, us. Default 10 min.
+  std::int64_t max_forward_jump_us = 600'000'000;
+  /// Restart on a new clock after this many consecutive refused frames
+  /// (kTimeWentBackwards / kTimeJumpedForward) that are consistent with each
+  /// other (each at or after the previous, within max_forward_jump_us).
+  /// 0: never restart.
+  std::uint8_t resync_frames = 3;
 };
+
 
 /// What one step did (readable after step()).
 struct StepStats {
@@ -72,6 +101,9 @@ struct StepStats {
   std::uint16_t dropped = 0;       ///< Unused measurements with no free slot to seed.
   std::uint16_t refused = 0;       ///< Unused measurements the initiator refused to start from (kOutOfRange).
   std::uint16_t filter_failures = 0;  ///< Predict/update refused by a filter.
+  std::uint16_t stale = 0;      ///< Deleted: predict gap over max_predict_us (also in `deleted`).
+  std::uint16_t unhealthy = 0;  ///< Deleted: P not positive definite, or a variance not positive and finite (also in `deleted`).
+  bool resynced = false;        ///< The tracker restarted on this frame's clock (tracks deleted first).
 };
 
 template <TrackingFilter Filter, class Initiator, std::size_t kMaxTracks, std::size_t kMaxMeasurements>
@@ -98,17 +130,28 @@ class Tracker {
 
   /// Process one frame.
   /// @return kOk; kMalformedFrame (count over capacity); kNonFinite; kOutOfRange
-  ///         (a measurement outside [z_min, z_max]); kTimeWentBackwards.
-  ///         On any non-kOk status the tracker is unchanged and reports() is empty.
+  ///         (a measurement outside [z_min, z_max]); kTimeWentBackwards;
+  ///         kTimeJumpedForward (later than the last frame by more than
+  ///         config.max_forward_jump_us). On any non-kOk status the tracks
+  ///         and the clock are unchanged and reports() is empty; only the
+  ///         count of consecutive off-clock frames moves (header comment).
   [[nodiscard]] Status step(const Scan& scan) {
     stats_ = StepStats{};
     report_count_ = 0;
-    const Status valid = validate(scan);
+    Status valid = validate(scan);
+    if (valid == Status::kOk) valid = check_time(scan.t_us);
+    if (valid == Status::kTimeWentBackwards || valid == Status::kTimeJumpedForward) {
+      if (off_clock_frame(scan.t_us)) {
+        restart_clock();
+        valid = Status::kOk;
+      }
+    }
     if (valid != Status::kOk) {
       stats_.status = valid;
       ++rejected_[static_cast<std::size_t>(valid)];
       return valid;
     }
+    off_clock_count_ = 0;
     have_time_ = true;
     last_t_us_ = scan.t_us;
     stats_.measurements = static_cast<std::uint16_t>(scan.count);
@@ -116,13 +159,14 @@ class Tracker {
     bool used[kMaxMeasurements] = {};
     bool hit[kMaxTracks] = {};
     bool existed[kMaxTracks] = {};
+    bool drop[kMaxTracks] = {};
 
-    predict_all(scan.t_us, existed);
-    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, used, hit);
-    associate(scan, TrackStatus::kTentative, gate_tentative_, used, hit);
+    predict_all(scan.t_us, existed, drop);
+    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, used, hit, drop);
+    associate(scan, TrackStatus::kTentative, gate_tentative_, used, hit, drop);
     initiate_from_seeds(scan, used, hit);
     seed_new(scan, used, hit);
-    manage(existed, hit);
+    manage(existed, hit, drop);
     build_reports(scan.t_us);
     return Status::kOk;
   }
@@ -135,11 +179,13 @@ class Tracker {
   const Config& config() const { return config_; }
   /// Frames refused so far, per status.
   std::uint32_t rejected(Status s) const { return rejected_[static_cast<std::size_t>(s)]; }
+  /// Restarts on a new clock so far (header comment).
+  std::uint32_t resyncs() const { return resyncs_; }
 
  private:
+  /// The frame's content: count, finiteness, measurement box.
   Status validate(const Scan& scan) const {
     if (scan.count > kMaxMeasurements) return Status::kMalformedFrame;
-    if (have_time_ && scan.t_us < last_t_us_) return Status::kTimeWentBackwards;
     for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
       if (i >= scan.count) break;
       if (!all_finite(scan.z[i])) return Status::kNonFinite;
@@ -155,20 +201,66 @@ class Tracker {
     return Status::kOk;
   }
 
+  /// The frame's time against the clock of the last accepted frame.
+  Status check_time(std::int64_t t_us) const {
+    if (!have_time_) return Status::kOk;
+    if (t_us < last_t_us_) return Status::kTimeWentBackwards;
+    if (elapsed_us(t_us, last_t_us_) > config_.max_forward_jump_us) return Status::kTimeJumpedForward;
+    return Status::kOk;
+  }
+
+  /// Count a well-formed frame refused for its time. Consecutive ones on
+  /// one consistent clock add up; one that is not consistent with the
+  /// previous starts the count again.
+  /// @return true when the count reaches config.resync_frames.
+  bool off_clock_frame(std::int64_t t_us) {
+    const bool consistent = off_clock_count_ > 0 && t_us >= off_clock_t_us_ &&
+                            elapsed_us(t_us, off_clock_t_us_) <= config_.max_forward_jump_us;
+    off_clock_count_ = consistent ? static_cast<std::uint8_t>(off_clock_count_ < UINT8_MAX ? off_clock_count_ + 1 : off_clock_count_)
+                                  : std::uint8_t{1};
+    off_clock_t_us_ = t_us;
+    return config_.resync_frames > 0 && off_clock_count_ >= config_.resync_frames;
+  }
+
+  /// Delete every track and take the next frame's time as the clock.
+  void restart_clock() {
+    for (const std::size_t i : table_.active_slots()) {
+      table_.release(i);
+      ++stats_.deleted;
+    }
+    have_time_ = false;
+    stats_.resynced = true;
+    ++resyncs_;
+  }
+
   static Scalar seconds(std::int64_t dt_us) {
     return ScalarTraits<Scalar>::from_ratio(dt_us, 1000000);
   }
 
-  void predict_all(std::int64_t t_us, bool (&existed)[kMaxTracks]) {
+  /// Predict every initialised track to the frame time. A track older than
+  /// max_predict_us, or whose filter finds the predicted P not positive
+  /// definite, is marked to drop (deleted in manage()).
+  void predict_all(std::int64_t t_us, bool (&existed)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     for (const std::size_t i : table_.active_slots()) {
       existed[i] = true;
       TrackT& tr = table_[i];
       tr.associated = false;
       tr.measurement_index = -1;
       if (!tr.initialised) continue;  // a seed keeps its own time
-      if (tr.filter.predict(seconds(t_us - tr.t_us)) != Status::kOk) {
+      const std::int64_t gap_us = elapsed_us(t_us, tr.t_us);
+      if (gap_us > config_.max_predict_us) {
+        drop[i] = true;
+        ++stats_.stale;
+        continue;
+      }
+      const Status s = tr.filter.predict(seconds(gap_us));
+      if (s != Status::kOk) {
         ++stats_.filter_failures;
-        continue;  // counted as a miss in manage(); deleted if it keeps failing
+        if (s == Status::kNotPositiveDefinite) {
+          drop[i] = true;
+          ++stats_.unhealthy;
+        }
+        continue;  // otherwise a miss in manage(); deleted if it keeps failing
       }
       tr.t_us = t_us;
     }
@@ -178,9 +270,9 @@ class Tracker {
   /// with the smallest d2 inside its gate. Order: table order, which is age
   /// order for a table that only grows, so older tracks choose first.
   void associate(const Scan& scan, TrackStatus status, const EllipsoidalGate<Scalar, kMeasDim>& gate,
-                 bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+                 bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     for (const std::size_t i : table_.active_slots()) {
-      if (table_[i].status != status || !table_[i].initialised) continue;
+      if (table_[i].status != status || !table_[i].initialised || drop[i]) continue;
       TrackT& tr = table_[i];
       if (tr.t_us != scan.t_us) continue;  // prediction failed this frame
       std::size_t best = kMaxMeasurements;
@@ -200,8 +292,12 @@ class Tracker {
         }
       }
       if (best == kMaxMeasurements) continue;
-      if (tr.filter.update(scan.z[best]) != Status::kOk) {
+      if (const Status s = tr.filter.update(scan.z[best]); s != Status::kOk) {
         ++stats_.filter_failures;
+        if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
+          drop[i] = true;
+          ++stats_.unhealthy;
+        }
         continue;
       }
       used[best] = true;
@@ -222,7 +318,9 @@ class Tracker {
       for (const std::size_t i : table_.active_slots()) {
         if (table_[i].initialised) continue;
         TrackT& tr = table_[i];
-        const Scalar dt = seconds(scan.t_us - tr.t_us);
+        const std::int64_t gap_us = elapsed_us(scan.t_us, tr.t_us);
+        if (gap_us > config_.max_predict_us) continue;  // a seed lives one frame; manage() drops it
+        const Scalar dt = seconds(gap_us);
         std::size_t best = kMaxMeasurements;
         Scalar best_cost{};
         for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
@@ -312,11 +410,21 @@ class Tracker {
     }
   }
 
+  /// True when every variance of P is positive and finite (written so that
+  /// a NaN fails).
+  bool healthy(const typename Filter::Cov& P) const {
+    for (int k = 0; k < P.rows(); ++k) {
+      if (!(P(k, k) > Scalar(0)) || !ScalarTraits<Scalar>::is_finite(P(k, k))) return false;
+    }
+    return true;
+  }
+
   /// M-of-N confirmation (the seed frame counts as the first hit); deletion of seeds that found no partner, of
   /// tentative tracks that can no longer reach M, of confirmed tracks after
-  /// max_coast_misses, and of any track whose position variance exceeds
-  /// the limit.
-  void manage(const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks]) {
+  /// max_coast_misses, of tracks marked to drop this frame (stale or
+  /// unhealthy), of any track with a variance that is not positive and
+  /// finite, and of any track whose position variance exceeds the limit.
+  void manage(const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks], const bool (&drop)[kMaxTracks]) {
     const std::uint8_t window =
         static_cast<std::uint8_t>(config_.confirm_n >= 8 ? 0xFFu : (1u << config_.confirm_n) - 1u);
     for (const std::size_t i : table_.active_slots()) {  // releases only slot i
@@ -354,8 +462,15 @@ class Tracker {
       } else if (tr.misses > config_.max_coast_misses) {
         remove = true;
       }
-      if (tr.initialised && position_variance(tr.filter.P()) > config_.max_position_variance_m2) {
+      if (drop[i]) {
         remove = true;
+      } else if (tr.initialised) {
+        if (!healthy(tr.filter.P())) {
+          remove = true;
+          ++stats_.unhealthy;
+        } else if (!(position_variance(tr.filter.P()) <= config_.max_position_variance_m2)) {
+          remove = true;
+        }
       }
       if (remove) {
         table_.release(i);
@@ -399,6 +514,9 @@ class Tracker {
   std::uint32_t rejected_[kStatusCount] = {};
   std::int64_t last_t_us_ = 0;
   bool have_time_ = false;
+  std::int64_t off_clock_t_us_ = 0;  ///< Time of the last frame refused for its time.
+  std::uint8_t off_clock_count_ = 0;  ///< Consecutive consistent ones (resync rule).
+  std::uint32_t resyncs_ = 0;
 };
 
 }  // namespace kestrel

@@ -29,6 +29,7 @@
 #include "kestrel/models/motion/constant_velocity_3d_sound_speed.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
+#include "kestrel/tracking/elapsed.hpp"
 #include "kestrel/tracking/multilateration.hpp"
 #include "kestrel/tracking/toa_scan.hpp"
 
@@ -48,6 +49,9 @@ struct UnderwaterTrackerConfig {
   /// Re-run the multilateration after this many frames in a row that carried
   /// at least init.min_arrivals arrivals but fused none (0: never).
   std::uint16_t reacquire_after_empty_frames = 3;
+  /// A frame more than this after the last one restarts the track from a
+  /// fresh fix instead of predicting across the gap, us. Default 60 s.
+  std::int64_t max_predict_us = 60'000'000;
 };
 
 /// What one step did (readable after step()).
@@ -132,12 +136,13 @@ class UnderwaterTracker {
 
     Filter next = filter_;
     std::uint16_t empty_frames = empty_frames_;
-    if (!initialised_) {
+    const std::int64_t gap_us = initialised_ ? elapsed_us(scan.t_us, t_us_) : 0;
+    if (!initialised_ || gap_us > config_.max_predict_us) {
       const Status s = initialise(next, z, present);
       if (s != Status::kOk) return refuse(s);
       empty_frames = 0;
     } else {
-      const Scalar dt = ScalarTraits<Scalar>::from_ratio(scan.t_us - t_us_, 1000000);
+      const Scalar dt = ScalarTraits<Scalar>::from_ratio(gap_us, 1000000);
       Status s = next.predict(dt);
       if (s == Status::kOk) s = next.update_gated(z, present, config_.gate);
       if (s != Status::kOk) return refuse(s);

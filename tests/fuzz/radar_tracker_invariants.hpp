@@ -1,0 +1,150 @@
+// The radar tracker driven by arbitrary bytes, for libFuzzer
+// (radar_tracker_fuzz.cpp) and for the regression test that replays the
+// corpus and a seeded batch of inputs under the normal build
+// (tests/core/tracking/tracker_fuzz_regression_test.cpp).
+//
+// The bytes are read as a sequence of wire radar frames (hal::Frame), each
+// converted by the board adapter (hal::to_scan) and stepped, in double,
+// float and Q31.32. Per frame, one op byte: bits 0-1 choose the time step
+// (next scan period; a signed step of up to +-32 s; any int64 time; a gap
+// of up to 49 days), bits 2-6 the plot count (0-31, over the scan
+// capacity of 16 on purpose). Per plot, one byte: bit 0 set reads a raw
+// range (u32 mm) and bearing (i32 binary angle), clear puts the plot near
+// one of four straight-line targets, so tracks form and live long enough to
+// meet the faults. After every step:
+//   - a refused frame (any status but kOk and kTooManyCandidates) leaves
+//     every track as it was and reports nothing;
+//   - every reported and every initialised track has a finite state and a
+//     positive definite covariance.
+#pragma once
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <memory>
+#include <span>
+
+#include "kestrel/hal/frame.hpp"
+#include "kestrel/hal/radar_adapter.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/math/positive_definite.hpp"
+#include "kestrel/scalar/fixed_point.hpp"
+#include "kestrel/scalar/fixed_point_eigen.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
+
+namespace kestrel::test {
+
+class ByteReader {
+ public:
+  explicit ByteReader(std::span<const std::uint8_t> in) : in_(in) {}
+  bool empty() const { return pos_ >= in_.size(); }
+  std::uint8_t u8() { return pos_ < in_.size() ? in_[pos_++] : 0; }
+  template <class T>
+  T read() {
+    std::uint8_t b[sizeof(T)] = {};
+    for (auto& x : b) x = u8();
+    T v;
+    std::memcpy(&v, b, sizeof(T));
+    return v;
+  }
+
+ private:
+  std::span<const std::uint8_t> in_;
+  std::size_t pos_ = 0;
+};
+
+/// Next frame from the bytes; false when they are used up.
+inline bool next_radar_frame(ByteReader& r, std::int64_t& t_us, int frame_index, hal::Frame& f) {
+  if (r.empty()) return false;
+  const std::uint8_t op = r.u8();
+  switch (op & 3u) {
+    case 0: t_us += 500000; break;
+    case 1: t_us += static_cast<std::int64_t>(r.read<std::int16_t>()) * 1000; break;
+    case 2: t_us = r.read<std::int64_t>(); break;
+    default: t_us += static_cast<std::int64_t>(r.read<std::uint32_t>()) * 1000; break;
+  }
+  f = hal::Frame{};
+  f.kind = hal::FrameKind::kRadar;
+  f.t_us = t_us;
+  f.count = static_cast<std::uint16_t>((op >> 2) & 31u);
+  for (std::uint16_t i = 0; i < f.count; ++i) {
+    const std::uint8_t b = r.u8();
+    hal::RadarPlot& p = f.radar[i];
+    p = hal::RadarPlot{};
+    if (b & 1u) {
+      p.range_mm = r.read<std::uint32_t>();
+      p.bearing_bam = r.read<std::int32_t>();
+    } else {
+      const int target = (b >> 1) & 3;
+      const double t = 0.5 * frame_index;
+      const double noise = static_cast<double>((b >> 3) & 31u) - 15.5;
+      const double x = -15000.0 + 4000.0 * target + (150.0 + 30.0 * target) * t + noise;
+      const double y = 8000.0 - 3000.0 * target + (40.0 - 60.0 * target) * t - noise;
+      p.range_mm = static_cast<std::uint32_t>(std::hypot(x, y) * 1000.0);
+      // atan2 = +pi maps to 2^31, one past the binary angle's range: clamp.
+      const double bam = std::atan2(y, x) / 3.14159265358979323846 * 2147483648.0;
+      p.bearing_bam = bam >= 2147483647.0 ? INT32_MAX : static_cast<std::int32_t>(bam);
+    }
+  }
+  return true;
+}
+
+template <class Tracker>
+bool same_tracks(const Tracker& a, const Tracker& b) {
+  for (std::size_t i = 0; i < a.tracks().capacity(); ++i) {
+    const auto& ta = a.tracks()[i];
+    const auto& tb = b.tracks()[i];
+    if (ta.status != tb.status || ta.id != tb.id || ta.initialised != tb.initialised || ta.age != tb.age ||
+        ta.hits != tb.hits || ta.misses != tb.misses || ta.history != tb.history || ta.t_us != tb.t_us) {
+      return false;
+    }
+    if (ta.status != TrackStatus::kFree && ta.initialised &&
+        (ta.filter.x() != tb.filter.x() || ta.filter.P() != tb.filter.P())) {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Runs the bytes through one scalar's tracker; nullptr or what broke.
+template <class Scalar>
+const char* check_radar_tracker_invariants_for(std::span<const std::uint8_t> in) {
+  using Tracker = RadarTracker<EkfCa<Scalar>, 8, 16>;
+  RadarTrackerParams p;
+  p.qj = 16.0;
+  // Heap, not stack: the tracker and its snapshot are a few tens of KiB.
+  auto tracker = std::make_unique<Tracker>(make_radar_tracker<Scalar, 8, 16>(p));
+  auto before = std::make_unique<Tracker>(*tracker);
+  auto frame = std::make_unique<hal::Frame>();
+  typename Tracker::Scan scan;
+  ByteReader r(in);
+  std::int64_t t_us = 0;
+  for (int k = 0; k < 400 && next_radar_frame(r, t_us, k, *frame); ++k) {
+    const Status converted = hal::to_scan(*frame, scan);
+    if (converted != Status::kOk && converted != Status::kTooManyCandidates) return "to_scan refused a radar frame";
+    *before = *tracker;
+    const Status s = tracker->step(scan);
+    if (s != Status::kOk) {
+      if (!tracker->reports().empty()) return "a refused frame published reports";
+      if (!same_tracks(*tracker, *before)) return "a refused frame changed a track";
+    }
+    for (const auto& rep : tracker->reports()) {
+      if (!all_finite(rep.x)) return "a reported state is not finite";
+      if (!is_positive_definite(rep.P)) return "a reported covariance is not positive definite";
+    }
+    for (const std::size_t i : tracker->tracks().active_slots()) {
+      const auto& tr = tracker->tracks()[i];
+      if (tr.initialised && !is_positive_definite(tr.filter.P())) return "a track holds a covariance that is not positive definite";
+    }
+  }
+  return nullptr;
+}
+
+inline const char* check_radar_tracker_invariants(std::span<const std::uint8_t> in) {
+  if (const char* why = check_radar_tracker_invariants_for<double>(in)) return why;
+  if (const char* why = check_radar_tracker_invariants_for<float>(in)) return why;
+  return check_radar_tracker_invariants_for<Q31_32>(in);
+}
+
+}  // namespace kestrel::test

@@ -1,0 +1,10 @@
+#!/bin/sh
+# Configure and build tests/fuzz with clang (CTest fixture of the `fuzz` and
+# `asan` tests). Usage: sanitized_build.sh <cmake> <tests/fuzz dir> <build dir>
+set -eu
+if ! command -v clang++ >/dev/null 2>&1; then
+  echo "clang++ not on PATH (run.sh installs clang): skipped"
+  exit 77
+fi
+"$1" -S "$2" -B "$3" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+"$1" --build "$3" -j "$(nproc 2>/dev/null || echo 2)"
