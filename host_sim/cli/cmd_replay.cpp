@@ -64,6 +64,7 @@ int cmd_replay(const ReplayOptions& o) {
   std::vector<std::uint8_t> bytes;
   std::vector<MeasurementFrame> frames;
   std::string source;
+  std::size_t skipped = 0;  // stream frames that did not decode
   if (!o.csv.empty()) {
     source = o.csv;
     const std::vector<MeasurementFrame> plots = read_radar_plot_csv(std::filesystem::path(o.csv));
@@ -72,12 +73,19 @@ int cmd_replay(const ReplayOptions& o) {
   } else {
     source = o.stream;
     bytes = read_file_bytes(o.stream);
-    std::size_t skipped = 0;
     frames = decode_stream(bytes, skipped);
     if (skipped > 0) std::printf("note: %zu frames of %s did not decode (see the status counts)\n", skipped, source.c_str());
   }
   const std::vector<TruthSample> truth =
       o.truth.empty() ? std::vector<TruthSample>{} : read_truth_csv(std::filesystem::path(o.truth));
+  if (frames.size() == skipped) {
+    // Not malformed (a bad truth CSV above is still an error), but nothing
+    // would be replayed: a script must not take it for a run. Stop before
+    // writing files, so no empty summary replaces a real one.
+    std::fprintf(stderr, "kestrel-sim: warning: %s held no frames%s, nothing to replay\n", source.c_str(),
+                 skipped > 0 ? " that decode" : "");
+    return kExitNoFrames;
+  }
 
   const FilterOptions& options = o.filter.options;
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);

@@ -64,6 +64,10 @@ struct ReplayOptions {
   std::string out = "results/replay";
   bool plots = true;
 };
+/// Exit status of `replay` when its input held no frames (a 0-byte stream,
+/// a stream of which no frame decodes, a CSV with only its header): a
+/// warning, not an error (exit 1), but not a run either, so not 0.
+inline constexpr int kExitNoFrames = 3;
 int cmd_replay(const ReplayOptions& o);
 
 struct TimingOptions {

@@ -73,6 +73,9 @@ std::optional<double> CsvReader::optional_number(std::size_t col) const {
   if (s.empty()) return std::nullopt;
   double v = 0.0;
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec == std::errc::result_out_of_range && end == s.data() + s.size()) {
+    fail_cell(col, "is outside the range of a double");
+  }
   if (ec != std::errc() || end != s.data() + s.size()) {
     fail("column '" + header_[col] + "': '" + std::string(s) + "' is not a number");
   }
@@ -98,5 +101,9 @@ long long CsvReader::integer(std::size_t col, long long lo, long long hi) const 
 }
 
 void CsvReader::fail(const std::string& what) const { throw CsvError(source_, line_, what); }
+
+void CsvReader::fail_cell(std::size_t col, const std::string& why) const {
+  fail("column '" + header_[col] + "': '" + std::string(fields_[col]) + "' " + why);
+}
 
 }  // namespace kestrel::sim

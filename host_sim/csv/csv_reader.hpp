@@ -54,6 +54,8 @@ class CsvReader {
 
   /// A CsvError at the current line.
   [[noreturn]] void fail(const std::string& what) const;
+  /// A CsvError at the current line: "column 'NAME': 'TEXT' " + why.
+  [[noreturn]] void fail_cell(std::size_t col, const std::string& why) const;
 
  private:
   static void split(std::string_view line, std::vector<std::string_view>& out);

@@ -19,8 +19,11 @@ namespace kestrel::sim {
 
 /// Parse plot rows into frames. Throws CsvError (with the line number) on a
 /// malformed row: a missing or non-numeric required value, a non-finite
-/// value, a negative range, a sensor_id outside 0..255, or a frame with
-/// more plots than a wire frame holds (hal::kMaxRadarPlots).
+/// value, a negative range, a value its wire field cannot carry (time,
+/// range, bearing, range rate: stream/quantise.hpp, never clamped or
+/// wrapped beyond a turn), a sensor_id outside 0..255, or a frame with
+/// more plots than a wire frame holds (hal::kMaxRadarPlots). A file with
+/// a header and no rows gives no frames; the caller decides what that means.
 std::vector<MeasurementFrame> read_radar_plot_csv(std::istream& in, const std::string& source);
 std::vector<MeasurementFrame> read_radar_plot_csv(const std::filesystem::path& path);
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "csv/csv_reader.hpp"
+#include "stream/quantise.hpp"
 
 namespace kestrel::sim {
 
@@ -23,6 +24,11 @@ std::vector<TruthSample> read_truth_csv(std::istream& in, const std::string& sou
   while (csv.next()) {
     TruthSample s;
     s.t_s = csv.number(c_time);
+    // Truth is matched to frames in wire microseconds (metrics/scoring.cpp),
+    // so its time must convert as a frame time does.
+    if (!try_wire_time_us(s.t_s).has_value()) {
+      csv.fail_cell(c_time, "is outside what the wire can carry, " + std::string(kWireTimeSpan));
+    }
     s.x_m = csv.number(c_x);
     s.y_m = csv.number(c_y);
     s.vx_mps = c_vx.has_value() ? csv.optional_number(*c_vx).value_or(kNaN) : kNaN;

@@ -242,7 +242,11 @@ PclScenarioRun generate_pcl(const PclScenarioConfig& c, std::uint64_t seed) {
     rec.wire.t_us = to_wire_time_us(tr.t_s);
     rec.wire.count = static_cast<std::uint16_t>(cands.size());
     for (std::size_t i = 0; i < cands.size(); ++i) {
-      rec.wire.pcl[i] = hal::PclCandidate{to_wire_range_mm(cands[i].rb_m), to_wire_doppler_mhz(cands[i].fd_hz),
+      // The simulated extractor reports a noisy bistatic range below zero
+      // (a target near the baseline) as 0: the field is unsigned.
+      // to_wire_range_mm refuses a negative value rather than clamp it.
+      const double rb_m = std::max(cands[i].rb_m, 0.0);
+      rec.wire.pcl[i] = hal::PclCandidate{to_wire_range_mm(rb_m), to_wire_doppler_mhz(cands[i].fd_hz),
                                           static_cast<std::int16_t>(std::lround(cands[i].snr_db * 100.0))};
       if (cands[i].target) rec.target_index = static_cast<int>(i);
     }

@@ -4,6 +4,7 @@
 // CSV written from a stream replays to the same bytes.
 #include <catch2/catch.hpp>
 #include <filesystem>
+#include <stdexcept>
 
 #include "csv/radar_plot_csv.hpp"
 #include "filters/filter_registry.hpp"
@@ -77,10 +78,11 @@ SCENARIO("A plot CSV written from a stream replays to the same bytes", "[host_si
 }
 
 SCENARIO("Quantisation to wire units", "[host_sim][stream]") {
-  THEN("range rounds to the millimetre and clamps at 0") {
+  THEN("range rounds to the millimetre; a value the field cannot hold is refused, not clamped") {
     CHECK(to_wire_range_mm(1.2344) == 1234);
     CHECK(to_wire_range_mm(1.2346) == 1235);
-    CHECK(to_wire_range_mm(-0.2) == 0);
+    CHECK_THROWS_AS(to_wire_range_mm(-0.2), std::out_of_range);
+    CHECK_THROWS_AS(to_wire_range_mm(4294967.296), std::out_of_range);
   }
   THEN("bearing maps to binary angle; +pi and -pi are the same direction") {
     CHECK(to_wire_bearing_bam(0.0) == 0);
