@@ -58,11 +58,15 @@ class ByteReader {
 inline bool next_radar_frame(ByteReader& r, std::int64_t& t_us, int frame_index, hal::Frame& f) {
   if (r.empty()) return false;
   const std::uint8_t op = r.u8();
+  // Steps wrap around the int64 range as a sensor's counter would.
+  const auto advance = [&t_us](std::int64_t step) {
+    t_us = static_cast<std::int64_t>(static_cast<std::uint64_t>(t_us) + static_cast<std::uint64_t>(step));
+  };
   switch (op & 3u) {
-    case 0: t_us += 500000; break;
-    case 1: t_us += static_cast<std::int64_t>(r.read<std::int16_t>()) * 1000; break;
+    case 0: advance(500000); break;
+    case 1: advance(static_cast<std::int64_t>(r.read<std::int16_t>()) * 1000); break;
     case 2: t_us = r.read<std::int64_t>(); break;
-    default: t_us += static_cast<std::int64_t>(r.read<std::uint32_t>()) * 1000; break;
+    default: advance(static_cast<std::int64_t>(r.read<std::uint32_t>()) * 1000); break;
   }
   f = hal::Frame{};
   f.kind = hal::FrameKind::kRadar;

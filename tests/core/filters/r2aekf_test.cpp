@@ -184,7 +184,7 @@ TEMPLATE_TEST_CASE("Scenario: eq. 11 rate limit and clamp, eq. 10 deadband", "[r
   }
 }
 
-TEMPLATE_TEST_CASE("Scenario: eq. 17-18 mixing: along x axial is the x block, lateral the y block; 45 degrees",
+TEMPLATE_TEST_CASE("Scenario: eq. 17-18 mixing: along x axial is the x block, lateral the y block, and at 45 degrees",
                    "[r2aekf][stage]", double, float) {
   using S = TestType;
   using kestrel::r2aekf::q_mixing;

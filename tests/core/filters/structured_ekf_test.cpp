@@ -145,7 +145,7 @@ bool exactly_symmetric(const M& A) {
 
 }  // namespace
 
-SCENARIO("The models expose their structure; Dense<M> hides it") {
+SCENARIO("The models expose their structure, and Dense<M> hides it") {
   STATIC_REQUIRE(kestrel::BlockDiagonalMotion<Ca<double>>);
   STATIC_REQUIRE(kestrel::SparseJacobianMeasurement<Polar<double>>);
   STATIC_REQUIRE(kestrel::SparseJacobianMeasurement<Polar<float>>);

@@ -207,7 +207,7 @@ SCENARIO("nearest neighbour picks the target among decoys and respects the gate"
   }
 }
 
-SCENARIO("one candidate feeds at most one track; two targets keep two tracks", "[pcl][tracker][nn]") {
+SCENARIO("one candidate feeds at most one track, and two targets keep two tracks", "[pcl][tracker][nn]") {
   auto tracker = make_tracker();
   // Two targets 40 m apart in Rb with the same rate.
   auto second = [](int k) { return kestrel::Vec<double, 2>(target_at(k)(0) + 40.0, -12.0); };

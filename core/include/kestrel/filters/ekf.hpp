@@ -269,9 +269,11 @@ class Ekf {
   /// shared linearisation, then the update through the Cholesky factor of
   /// S (structure::whitened_gain): x + U w and P - U U^T on the upper
   /// triangle, with U = P H^T L^-T and w = L^-1 nu (header comment).
-  [[nodiscard]] Status update_structured(const MeasVec& z, const MeasCov& R)
-    requires kSparseUpdate
-  {
+  /// (Member templates, so that clang 14 instantiates neither body for a
+  /// filter without the structure.)
+  template <bool kEnabled = kSparseUpdate>
+    requires kEnabled
+  [[nodiscard]] Status update_structured(const MeasVec& z, const MeasCov& R) {
     const auto& lin = linearisation();
     const MeasVec nu = measurement_.residual(z, lin.z_hat);
     MeasCov S = lin.HPHt;
@@ -436,9 +438,9 @@ class Ekf {
 
   /// h(x), the Jacobian columns and H P H^T at the current x and P,
   /// computed on first use after any change.
-  const auto& linearisation() const
-    requires kSparseUpdate
-  {
+  template <bool kEnabled = kSparseUpdate>
+    requires kEnabled
+  const auto& linearisation() const {
     if (!lin_.valid) {
       lin_.z_hat = measurement_.predict(x_);
       lin_.J.Hc = measurement_.jacobian_columns(x_);

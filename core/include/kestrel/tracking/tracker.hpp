@@ -430,7 +430,7 @@ class Tracker {
     for (const std::size_t i : table_.active_slots()) {  // releases only slot i
       TrackT& tr = table_[i];
       if (existed[i]) {
-        tr.history = static_cast<std::uint8_t>((tr.history << 1) | (hit[i] ? 1u : 0u));
+        tr.history = static_cast<std::uint8_t>((static_cast<unsigned>(tr.history) << 1u) | (hit[i] ? 1u : 0u));
         tr.age = static_cast<std::uint16_t>(tr.age < UINT16_MAX ? tr.age + 1 : tr.age);
       } else {
         tr.history = 1;  // created this frame: its first hit
