@@ -94,6 +94,8 @@ inline bool next_radar_frame(ByteReader& r, std::int64_t& t_us, int frame_index,
   return true;
 }
 
+/// Everything observable about two trackers' tables is the same (status,
+/// id, counters, history, time, x and P of every slot): "unchanged" checks.
 template <class Tracker>
 bool same_tracks(const Tracker& a, const Tracker& b) {
   for (std::size_t i = 0; i < a.tracks().capacity(); ++i) {

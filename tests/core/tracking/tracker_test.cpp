@@ -6,6 +6,7 @@
 #include <limits>
 #include <random>
 
+#include "fuzz/radar_tracker_invariants.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 #include "support/alloc_guard.hpp"
 
@@ -39,24 +40,6 @@ typename Tracker::Scan scan_at(std::int64_t t_us) {
   s.t_us = t_us;
   s.count = 0;
   return s;
-}
-
-/// Everything observable about the track table, for "unchanged" checks.
-template <class Tracker>
-bool same_tables(const Tracker& a, const Tracker& b) {
-  for (std::size_t i = 0; i < a.tracks().capacity(); ++i) {
-    const auto& ta = a.tracks()[i];
-    const auto& tb = b.tracks()[i];
-    if (ta.status != tb.status || ta.id != tb.id || ta.initialised != tb.initialised || ta.age != tb.age ||
-        ta.hits != tb.hits || ta.misses != tb.misses || ta.history != tb.history || ta.t_us != tb.t_us) {
-      return false;
-    }
-    if (ta.status != TrackStatus::kFree && ta.initialised &&
-        (ta.filter.x() != tb.filter.x() || ta.filter.P() != tb.filter.P())) {
-      return false;
-    }
-  }
-  return true;
 }
 
 }  // namespace
@@ -196,7 +179,7 @@ SCENARIO("bad frames get their status and leave the track table untouched", "[tr
       THEN("step returns its status, reports nothing and changes nothing") {
         CHECK(tracker.step(c.scan) == c.expected);
         CHECK(tracker.reports().empty());
-        CHECK(same_tables(tracker, snapshot));
+        CHECK(kestrel::test::same_tracks(tracker, snapshot));
         CHECK(tracker.rejected(c.expected) == 1);
         AND_THEN("the next good frame is tracked as if the bad one never came") {
           auto ref = snapshot;

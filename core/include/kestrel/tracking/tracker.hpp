@@ -88,7 +88,6 @@ struct TrackerConfig {
   std::uint8_t resync_frames = 3;
 };
 
-
 /// What one step did (readable after step()).
 struct StepStats {
   Status status = Status::kOk;     ///< Return value of the step.
