@@ -6,9 +6,9 @@
 // The bytes are read as a sequence of wire radar frames (hal::Frame), each
 // converted by the board adapter (hal::to_scan) and stepped, in double,
 // float and Q31.32. Per frame, one op byte: bits 0-1 choose the time step
-// (next scan period; a signed step of up to +-32 s; any int64 time; a gap
-// of up to 49 days), bits 2-6 the plot count (0-31, over the scan
-// capacity of 16 on purpose). Per plot, one byte: bit 0 set reads a raw
+// (fuzz_bytes.hpp: the next 0.5 s scan; a signed step of up to +-32 s; any
+// int64 time; a gap of up to 49 days), bits 2-6 the plot count (0-31, over
+// the scan capacity of 16 on purpose). Per plot, one byte: bit 0 set reads a raw
 // range (u32 mm) and bearing (i32 binary angle), clear puts the plot near
 // one of four straight-line targets, so tracks form and live long enough to
 // meet the faults. After every step:
@@ -21,10 +21,10 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <memory>
 #include <span>
 
+#include "fuzz_bytes.hpp"
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/hal/radar_adapter.hpp"
 #include "kestrel/math/finite.hpp"
@@ -32,42 +32,15 @@
 #include "kestrel/scalar/fixed_point.hpp"
 #include "kestrel/scalar/fixed_point_eigen.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
+#include "same_tracks.hpp"
 
 namespace kestrel::test {
-
-class ByteReader {
- public:
-  explicit ByteReader(std::span<const std::uint8_t> in) : in_(in) {}
-  bool empty() const { return pos_ >= in_.size(); }
-  std::uint8_t u8() { return pos_ < in_.size() ? in_[pos_++] : 0; }
-  template <class T>
-  T read() {
-    std::uint8_t b[sizeof(T)] = {};
-    for (auto& x : b) x = u8();
-    T v;
-    std::memcpy(&v, b, sizeof(T));
-    return v;
-  }
-
- private:
-  std::span<const std::uint8_t> in_;
-  std::size_t pos_ = 0;
-};
 
 /// Next frame from the bytes; false when they are used up.
 inline bool next_radar_frame(ByteReader& r, std::int64_t& t_us, int frame_index, hal::Frame& f) {
   if (r.empty()) return false;
   const std::uint8_t op = r.u8();
-  // Steps wrap around the int64 range as a sensor's counter would.
-  const auto advance = [&t_us](std::int64_t step) {
-    t_us = static_cast<std::int64_t>(static_cast<std::uint64_t>(t_us) + static_cast<std::uint64_t>(step));
-  };
-  switch (op & 3u) {
-    case 0: advance(500000); break;
-    case 1: advance(static_cast<std::int64_t>(r.read<std::int16_t>()) * 1000); break;
-    case 2: t_us = r.read<std::int64_t>(); break;
-    default: advance(static_cast<std::int64_t>(r.read<std::uint32_t>()) * 1000); break;
-  }
+  step_time(r, op, 500000, t_us);
   f = hal::Frame{};
   f.kind = hal::FrameKind::kRadar;
   f.t_us = t_us;
@@ -89,25 +62,6 @@ inline bool next_radar_frame(ByteReader& r, std::int64_t& t_us, int frame_index,
       // atan2 = +pi maps to 2^31, one past the binary angle's range: clamp.
       const double bam = std::atan2(y, x) / 3.14159265358979323846 * 2147483648.0;
       p.bearing_bam = bam >= 2147483647.0 ? INT32_MAX : static_cast<std::int32_t>(bam);
-    }
-  }
-  return true;
-}
-
-/// Everything observable about two trackers' tables is the same (status,
-/// id, counters, history, time, x and P of every slot): "unchanged" checks.
-template <class Tracker>
-bool same_tracks(const Tracker& a, const Tracker& b) {
-  for (std::size_t i = 0; i < a.tracks().capacity(); ++i) {
-    const auto& ta = a.tracks()[i];
-    const auto& tb = b.tracks()[i];
-    if (ta.status != tb.status || ta.id != tb.id || ta.initialised != tb.initialised || ta.age != tb.age ||
-        ta.hits != tb.hits || ta.misses != tb.misses || ta.history != tb.history || ta.t_us != tb.t_us) {
-      return false;
-    }
-    if (ta.status != TrackStatus::kFree && ta.initialised &&
-        (ta.filter.x() != tb.filter.x() || ta.filter.P() != tb.filter.P())) {
-      return false;
     }
   }
   return true;

@@ -6,7 +6,7 @@
 #include <limits>
 #include <random>
 
-#include "fuzz/radar_tracker_invariants.hpp"
+#include "fuzz/same_tracks.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 #include "support/alloc_guard.hpp"
 

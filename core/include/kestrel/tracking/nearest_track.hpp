@@ -14,6 +14,7 @@
 
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
+#include "kestrel/tracking/elapsed.hpp"
 #include "kestrel/tracking/track_table.hpp"
 
 namespace kestrel {
@@ -32,7 +33,8 @@ void nearest_track_d2(const TrackTable<TrackT, kMaxTracks>& table, std::int64_t 
   for (std::size_t i = 0; i < kMaxTracks; ++i) {
     if (!table.active(i) || !table[i].initialised) continue;
     auto filter = table[i].filter;
-    const std::int64_t dt_us = t_us > table[i].t_us ? t_us - table[i].t_us : 0;
+    // Frame and track times are any int64 a sensor sent: their gap saturates.
+    const std::int64_t dt_us = t_us > table[i].t_us ? elapsed_us(t_us, table[i].t_us) : 0;
     if (filter.predict(T::from_ratio(dt_us, 1000000)) != Status::kOk) continue;
     for (std::size_t j = 0; j < kN; ++j) {
       if (j >= n) break;
