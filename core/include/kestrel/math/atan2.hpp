@@ -25,12 +25,9 @@
 //
 // Only + - * / and sign-bit operations, so IEEE 754 makes every step
 // correctly rounded and the result is the same on every IEEE platform as
-// long as a*b+c is not contracted into an FMA. Caution: GCC 12 does
-// contract in C++ even under -std=c++20 when the target has an FMA
-// (checked: -march=haswell changes the golden hash of atan2_test.cpp;
-// plain x86-64 has no FMA, Cortex-M4F/M7 do), so a board build needs
-// -ffp-contract=off for the same bits (prng.hpp's log/exp would be in the
-// same position).
+// long as a*b+c is not contracted into an FMA: kestrel::core compiles with
+// -ffp-contract=off, which GCC needs even under -std=c++20 on a target
+// with an FMA (Cortex-M4F/M7).
 // No loop, no table lookup beyond the 12 constants, no libm call.
 #pragma once
 

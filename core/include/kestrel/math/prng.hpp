@@ -18,11 +18,9 @@
 //   both are our own here: exact exponent handling (bits or frexp/ldexp)
 //   plus fixed polynomials evaluated with + - * / only. IEEE 754 makes those
 //   correctly rounded, so the stream is bit-identical as long as the compiler
-//   does not contract a*b+c into an FMA. Caution: GCC 12 contracts in C++
-//   even under -std=c++20 when the target has an FMA (Cortex-M4F/M7, x86
-//   with -mfma; plain x86-64 has none; found with math/atan2.hpp's golden
-//   hash under -march=haswell), so a board build that must match the host
-//   bit for bit needs -ffp-contract=off, which no preset sets today.
+//   does not contract a*b+c into an FMA (kestrel::core compiles with
+//   -ffp-contract=off; GCC contracts in C++ otherwise, even under
+//   -std=c++20, on a target with an FMA).
 //   Every rejection loop is bounded (kMaxTries); exhausting one has a
 //   probability below 1e-100 and returns a fixed value.
 #pragma once

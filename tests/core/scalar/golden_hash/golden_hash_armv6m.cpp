@@ -15,23 +15,12 @@
 #include <cstdint>
 
 #include "core/scalar/s1_integer_scenario.hpp"
+#include "support/arm_linux_user.hpp"
 
 namespace {
 
-long linux_syscall(long number, long a, long b, long c) {
-  register long r0 asm("r0") = a;
-  register long r1 asm("r1") = b;
-  register long r2 asm("r2") = c;
-  register long r7 asm("r7") = number;
-  asm volatile("svc 0" : "+r"(r0) : "r"(r1), "r"(r2), "r"(r7) : "memory");
-  return r0;
-}
-
-void write_text(const char* s) {
-  std::size_t n = 0;
-  while (s[n] != '\0') ++n;
-  linux_syscall(4 /* write */, 1, reinterpret_cast<long>(s), static_cast<long>(n));
-}
+using kestrel::test::arm_linux_user::exit_with;
+using kestrel::test::arm_linux_user::write_text;
 
 void write_hash(const char* label, std::uint64_t h, bool ok) {
   char line[48];
@@ -50,8 +39,7 @@ void write_hash(const char* label, std::uint64_t h, bool ok) {
 
 extern "C" [[noreturn]] void kestrel_assert_failed(const char*, int, const char*) {
   write_text("assertion failed\n");
-  linux_syscall(1 /* exit */, 2, 0, 0);
-  __builtin_unreachable();
+  exit_with(2);
 }
 
 extern "C" [[noreturn]] void _start() {
@@ -63,6 +51,5 @@ extern "C" [[noreturn]] void _start() {
   write_hash("Q23.40", q23, ok23);
   const bool clean = kestrel::fixed_point_overflow_count() == 0;
   write_text(clean ? "ARMv6-M (Cortex-M0+ code), overflow events 0\n" : "overflow events counted\n");
-  linux_syscall(1 /* exit */, ok31 && ok23 && clean ? 0 : 1, 0, 0);
-  __builtin_unreachable();
+  exit_with(ok31 && ok23 && clean ? 0 : 1);
 }
