@@ -7,7 +7,7 @@ measured calls), prints instructions per step for every filter and path
 class, and fails when a path exceeds its budget in instruction_budgets.json
 by more than the recorded tolerance (2 %). Counts are deterministic for a
 given binary; they depend on the compiler and flags, so the budgets are
-recorded from the host-release preset (RelWithDebInfo, -O2 -g).
+recorded from the host-release preset (-O2 -DNDEBUG, no debug info).
 
   check_instruction_budgets.py --exe build/host-release/host_sim/bench/kestrel-instr-count
   ... --update          rewrite the budgets with the measured counts
