@@ -280,6 +280,55 @@ SCENARIO("bad frames get a status and leave the tracker untouched", "[uw][tracke
   }
 }
 
+SCENARIO("a far-future frame is refused, and a clock that really moved is followed", "[uw][tracker][time]") {
+  Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+  for (int k = 0; k < 5; ++k) REQUIRE(tr.step(frame_at(k)) == Status::kOk);
+  const Tracker before = tr;
+  const auto shifted = [](int k, std::int64_t by_us) {
+    Scan s = frame_at(k);
+    s.t_us += by_us;
+    return s;
+  };
+  WHEN("one frame is a day ahead") {
+    CHECK(tr.step(shifted(5, 86'400'000'000)) == Status::kTimeJumpedForward);
+    CHECK(same_state(tr, before));
+    CHECK(tr.reports().empty());
+    THEN("the next frame on the old clock is tracked, not re-initialised") {
+      CHECK(tr.step(frame_at(5)) == Status::kOk);
+      CHECK_FALSE(tr.last_step().initialised);
+      CHECK(tr.last_step().fused == 8);
+      CHECK(tr.counters().resyncs == 0);
+    }
+  }
+  for (const std::int64_t by_us : {std::int64_t{-100'000'000}, std::int64_t{3'600'000'000}}) {
+    WHEN("the sensor clock moves by " << by_us / 1000000 << " s and stays there") {
+      CHECK(tr.step(shifted(5, by_us)) == (by_us < 0 ? Status::kTimeWentBackwards : Status::kTimeJumpedForward));
+      CHECK(same_state(tr, before));
+      CHECK(tr.step(shifted(6, by_us)) == (by_us < 0 ? Status::kTimeWentBackwards : Status::kTimeJumpedForward));
+      CHECK(same_state(tr, before));
+      THEN("the third consistent frame restarts the track from a fix on the new clock") {
+        CHECK(tr.step(shifted(7, by_us)) == Status::kOk);
+        CHECK(tr.last_step().resynced);
+        CHECK(tr.last_step().initialised);
+        CHECK(tr.counters().resyncs == 1);
+        REQUIRE(tr.reports().size() == 1);
+        CHECK(tr.reports()[0].t_us == shifted(7, by_us).t_us);
+        CHECK(tr.step(shifted(8, by_us)) == Status::kOk);
+        CHECK_FALSE(tr.last_step().resynced);
+        CHECK((tr.filter().x().segment<3>(L::kPos) - truth_at(8)).norm() < 5.0);
+      }
+    }
+  }
+  WHEN("refused frames disagree with each other (each earlier than the one before)") {
+    for (int i = 1; i <= 6; ++i) CHECK(tr.step(shifted(5, -100'000'000 * i)) == Status::kTimeWentBackwards);
+    THEN("the clock never moves") {
+      CHECK(tr.counters().resyncs == 0);
+      CHECK(same_state(tr, before));
+      CHECK(tr.step(frame_at(5)) == Status::kOk);
+    }
+  }
+}
+
 SCENARIO("a tracker step allocates nothing", "[uw][tracker][alloc]") {
   GIVEN("a tracker and 50 noisy frames with an outlier every seventh frame") {
     Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());

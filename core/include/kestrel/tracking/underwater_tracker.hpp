@@ -52,6 +52,13 @@ struct UnderwaterTrackerConfig {
   /// A frame more than this after the last one restarts the track from a
   /// fresh fix instead of predicting across the gap, us. Default 60 s.
   std::int64_t max_predict_us = 60'000'000;
+  /// A frame later than the last accepted one by more than this is refused
+  /// (kTimeJumpedForward), us. Default 10 min. The same rule as Tracker's.
+  std::int64_t max_forward_jump_us = 600'000'000;
+  /// Frames refused for their time (backwards or a jump) that agree with
+  /// each other, in a row, after which the tracker takes their clock and
+  /// restarts from a fresh fix (0: never).
+  std::uint8_t resync_frames = 3;
 };
 
 /// What one step did (readable after step()).
@@ -65,6 +72,7 @@ struct UnderwaterStepStats {
   ChannelMask gated_mask = 0;   ///< Channels dropped by a gate or rejected by the fix.
   bool initialised = false;     ///< This frame (re)started the track from a multilateration fix.
   bool predict_only = false;    ///< Tracked frame with nothing fused.
+  bool resynced = false;        ///< This frame's clock replaced the old one (resync rule).
 };
 
 /// Running totals since construction.
@@ -75,6 +83,7 @@ struct UnderwaterCounters {
   std::uint32_t fused = 0;            ///< Arrivals fused.
   std::uint32_t gated_out = 0;        ///< Arrivals gated out or rejected by a fix.
   std::uint32_t predict_only = 0;     ///< Tracked frames with nothing fused.
+  std::uint32_t resyncs = 0;          ///< Clock changes taken by the resync rule.
   std::uint32_t rejected[kStatusCount] = {};  ///< Steps refused, per status.
 };
 
@@ -118,26 +127,42 @@ class UnderwaterTracker {
   /// @return kOk (tracked, predict-only, or initialised: see last_step());
   ///   frame checks, in this order: kMalformedFrame (count over capacity,
   ///   unknown path, two arrivals on one channel), kTimeWentBackwards,
-  ///   kNonFinite (an arrival time), kOutOfRange (beacon not configured, time
-  ///   outside (0, max_toa_s]);
+  ///   kTimeJumpedForward (later than the last frame by more than
+  ///   max_forward_jump_us), kNonFinite (an arrival time), kOutOfRange
+  ///   (beacon not configured, time outside (0, max_toa_s]);
   ///   before initialisation, the fix's status: kUnderdetermined,
   ///   kNotPositiveDefinite, kNoConvergence, kAmbiguous;
   ///   filter failures: kNonFinite, kNotPositiveDefinite.
-  ///   On any non-kOk status the tracker is unchanged and reports() is empty.
+  ///   On any non-kOk status the tracker is unchanged and reports() is empty;
+  ///   only the count of consecutive off-clock frames moves: resync_frames
+  ///   of them in a row, each at or after the previous and within
+  ///   max_forward_jump_us of it, restart the track from a fix on their
+  ///   clock (last_step().resynced, counters().resyncs).
   [[nodiscard]] Status step(const Scan& scan) {
     stats_ = UnderwaterStepStats{};
     report_count_ = 0;
     MeasVec z = MeasVec::Zero();
     ChannelMask present = 0;
-    const Status valid = validate(scan, z, present);
+    Status valid = validate(scan, z, present, true);
+    // A frame refused only for its time counts toward the resync rule;
+    // taking the new clock commits only if the frame then gives a fix.
+    bool resync = false;
+    if (valid == Status::kTimeWentBackwards || valid == Status::kTimeJumpedForward) {
+      z.setZero();
+      present = 0;
+      if (validate(scan, z, present, false) == Status::kOk && off_clock_frame(scan.t_us)) {
+        resync = true;
+        valid = Status::kOk;
+      }
+    }
     if (valid != Status::kOk) return refuse(valid);
     stats_.arrivals = static_cast<std::uint8_t>(scan.count);
     stats_.present = present;
 
     Filter next = filter_;
     std::uint16_t empty_frames = empty_frames_;
-    const std::int64_t gap_us = initialised_ ? elapsed_us(scan.t_us, t_us_) : 0;
-    if (!initialised_ || gap_us > config_.max_predict_us) {
+    const std::int64_t gap_us = initialised_ && !resync ? elapsed_us(scan.t_us, t_us_) : 0;
+    if (!initialised_ || resync || gap_us > config_.max_predict_us) {
       const Status s = initialise(next, z, present);
       if (s != Status::kOk) return refuse(s);
       empty_frames = 0;
@@ -172,7 +197,10 @@ class UnderwaterTracker {
     empty_frames_ = empty_frames;
     t_us_ = scan.t_us;
     have_time_ = true;
+    off_clock_count_ = 0;
     stats_.status = Status::kOk;
+    stats_.resynced = resync;
+    if (resync) ++counters_.resyncs;
     ++counters_.frames_ok;
     counters_.arrivals += stats_.arrivals;
     counters_.fused += stats_.fused;
@@ -212,8 +240,9 @@ class UnderwaterTracker {
     return s;
   }
 
-  /// Frame checks; fills the channel vector and mask on success.
-  Status validate(const Scan& scan, MeasVec& z, ChannelMask& present) const {
+  /// Frame checks; fills the channel vector and mask on success. The time
+  /// against the last accepted frame is checked only when check_time.
+  Status validate(const Scan& scan, MeasVec& z, ChannelMask& present, bool check_time) const {
     using T = ScalarTraits<Scalar>;
     if (scan.count > kMaxArrivals) return Status::kMalformedFrame;
     for (std::size_t i = 0; i < kMaxArrivals; ++i) {
@@ -225,7 +254,10 @@ class UnderwaterTracker {
       if (has_channel(present, ch)) return Status::kMalformedFrame;
       present = with_channel(present, ch);
     }
-    if (have_time_ && scan.t_us < t_us_) return Status::kTimeWentBackwards;
+    if (check_time && have_time_) {
+      if (scan.t_us < t_us_) return Status::kTimeWentBackwards;
+      if (elapsed_us(scan.t_us, t_us_) > config_.max_forward_jump_us) return Status::kTimeJumpedForward;
+    }
     for (std::size_t i = 0; i < kMaxArrivals; ++i) {
       if (i >= scan.count) break;
       if (!T::is_finite(scan.arrivals[i].toa_s)) return Status::kNonFinite;
@@ -238,6 +270,18 @@ class UnderwaterTracker {
       z(Toa::channel(a.beacon, a.path)) = a.toa_s;
     }
     return Status::kOk;
+  }
+
+  /// Count a frame refused for its time (Tracker's rule): consecutive ones
+  /// on one consistent clock add up, any other starts the count again.
+  /// @return true when the count reaches config.resync_frames.
+  bool off_clock_frame(std::int64_t t_us) {
+    const bool consistent = off_clock_count_ > 0 && t_us >= off_clock_t_us_ &&
+                            elapsed_us(t_us, off_clock_t_us_) <= config_.max_forward_jump_us;
+    off_clock_count_ = consistent ? static_cast<std::uint8_t>(off_clock_count_ < UINT8_MAX ? off_clock_count_ + 1 : off_clock_count_)
+                                  : std::uint8_t{1};
+    off_clock_t_us_ = t_us;
+    return config_.resync_frames > 0 && off_clock_count_ >= config_.resync_frames;
   }
 
   /// Fix by multilateration, then one EKF update with the fix's inliers from
@@ -280,6 +324,8 @@ class UnderwaterTracker {
   std::size_t report_count_ = 0;
   std::int64_t t_us_ = 0;
   std::uint16_t empty_frames_ = 0;
+  std::int64_t off_clock_t_us_ = 0;   ///< Time of the last frame refused for its time.
+  std::uint8_t off_clock_count_ = 0;  ///< Consecutive consistent ones (resync rule).
   bool have_time_ = false;
   bool initialised_ = false;
 };
@@ -306,6 +352,9 @@ struct UnderwaterTrackerParams {
   double reject_sigma = 3.0;                  ///< Multilateration rejection threshold, sigma.
   double max_toa_s = 10.0;                    ///< Largest plausible arrival time, s.
   std::uint16_t reacquire_after_empty_frames = 3;  ///< 0: never re-run the fix.
+  std::int64_t max_predict_us = 60'000'000;        ///< Longer gaps restart from a fresh fix, us.
+  std::int64_t max_forward_jump_us = 600'000'000;  ///< Later frames are refused (kTimeJumpedForward), us.
+  std::uint8_t resync_frames = 3;                  ///< Consistent refused frames that move the clock (0: never).
 };
 
 /// Tracker configuration from the parameters. Beacons past kMaxBeacons are ignored.
@@ -335,6 +384,9 @@ UnderwaterTrackerConfig<Scalar, kMaxBeacons> underwater_tracker_config(const Und
   c.initial_sound_speed_sigma_mps = T::from_double(p.initial_sound_speed_sigma_mps);
   c.max_toa_s = T::from_double(p.max_toa_s);
   c.reacquire_after_empty_frames = p.reacquire_after_empty_frames;
+  c.max_predict_us = p.max_predict_us;
+  c.max_forward_jump_us = p.max_forward_jump_us;
+  c.resync_frames = p.resync_frames;
   return c;
 }
 
