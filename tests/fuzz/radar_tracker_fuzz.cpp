@@ -1,7 +1,7 @@
 // libFuzzer target: arbitrary bytes as radar frames into the radar tracker
 // in double, float and Q31.32 (radar_tracker_invariants.hpp); a broken
 // invariant aborts with its description. tests/fuzz/CMakeLists.txt builds
-// it with clang (KESTREL_FUZZ=ON) and runs it briefly under CTest (label
+// it with clang and runs it briefly under CTest (label
 // `fuzz`); docs/fuzzing.md gives the long run.
 #include <cstddef>
 #include <cstdint>
