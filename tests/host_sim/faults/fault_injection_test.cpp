@@ -100,9 +100,9 @@ struct Fault {
   std::map<Status, std::size_t> not_ok;  ///< Expected count of each status other than kOk.
   std::size_t frames = 0;                ///< Frames the Runner should see.
   std::size_t new_tracks = 0;            ///< Confirmed tracks expected after the first (a rule deleted it).
-  /// Clutter faults: false tracks the M-of-N confirmation lets through
-  /// during the burst (measured; a ceiling, not a goal), all deleted by
-  /// 10 s after it.
+  /// Clutter faults: false tracks the M-of-N confirmation lets through at
+  /// once during the burst (measured; a ceiling, not a goal); none may be
+  /// left 60 frames after the fault's start.
   std::size_t ghosts = 0;
 };
 
