@@ -123,20 +123,7 @@ const char* check_pcl_tracker_invariants_for(std::span<const std::uint8_t> in, F
     tally.refused += s != Status::kOk ? 1 : 0;
     tally.truncated += converted == Status::kTooManyCandidates ? 1 : 0;
     tally.reports += static_cast<int>(tracker->reports().size());
-    if (s != Status::kOk) {
-      if (!tracker->reports().empty()) return "a refused frame published reports";
-      if (!same_tracks(*tracker, *before)) return "a refused frame changed a track";
-    }
-    for (const auto& rep : tracker->reports()) {
-      if (!all_finite(rep.x)) return "a reported state is not finite";
-      if (!is_positive_definite(rep.P)) return "a reported covariance is not positive definite";
-    }
-    for (const std::size_t i : tracker->tracks().active_slots()) {
-      const auto& tr = tracker->tracks()[i];
-      if (!tr.initialised) continue;
-      if (!all_finite(tr.filter.x())) return "a track holds a state that is not finite";
-      if (!is_positive_definite(tr.filter.P())) return "a track holds a covariance that is not positive definite";
-    }
+    if (const char* why = step_invariant_broken(*tracker, *before, s)) return why;
   }
   return nullptr;
 }
