@@ -24,30 +24,35 @@ using CvRadar = PolarRadar<ConstantVelocity2D<S>>;
 template <class S>
 using CaRadar = PolarRadar<ConstantAcceleration2D<S>>;
 
-#define KESTREL_INSTANTIATE_SIGMA_FILTERS(S)                                            \
-  template class Ukf<ConstantVelocity2D<S>, CvRadar<S>>;                                \
-  template class Cdkf<ConstantVelocity2D<S>, CvRadar<S>>;                               \
-  template class SrUkf<ConstantVelocity2D<S>, CvRadar<S>>;                              \
-  template class SrCdkf<ConstantVelocity2D<S>, CvRadar<S>>;                             \
-  template class Crpf<ConstantVelocity2D<S>, CvRadar<S>, 100>;                          \
-  template class Ukf<ConstantAcceleration2D<S>, CaRadar<S>>;                            \
-  template class Cdkf<ConstantAcceleration2D<S>, CaRadar<S>>;                           \
-  template class SrUkf<ConstantAcceleration2D<S>, CaRadar<S>>;                          \
-  template class SrCdkf<ConstantAcceleration2D<S>, CaRadar<S>>;                         \
-  template class Crpf<ConstantAcceleration2D<S>, CaRadar<S>, 16>;                       \
-  template class NormalGenerator<S>;                                                    \
-  static_assert(TrackingFilter<Ukf<ConstantVelocity2D<S>, CvRadar<S>>>);                \
-  static_assert(TrackingFilter<Cdkf<ConstantVelocity2D<S>, CvRadar<S>>>);               \
-  static_assert(TrackingFilter<SrUkf<ConstantVelocity2D<S>, CvRadar<S>>>);              \
-  static_assert(TrackingFilter<SrCdkf<ConstantVelocity2D<S>, CvRadar<S>>>);             \
-  static_assert(TrackingFilter<Crpf<ConstantVelocity2D<S>, CvRadar<S>, 100>>);          \
-  template Status cholesky_rank1_update<S, 4>(Mat<S, 4, 4>&, const Vec<S, 4>&, S);      \
-  template Status cholesky_semidefinite<S, 4>(const Mat<S, 4, 4>&, Mat<S, 4, 4>&);      \
+// Every filter in both scalars and on both motion models, each pairing
+// once (CV-2D with one scalar, CA-2D with the other): the filters' code does
+// not depend on the pairing, and each instantiation costs ten to twenty
+// seconds of compile time.
+template class Ukf<ConstantVelocity2D<double>, CvRadar<double>>;
+template class Ukf<ConstantAcceleration2D<float>, CaRadar<float>>;
+template class Cdkf<ConstantVelocity2D<float>, CvRadar<float>>;
+template class Cdkf<ConstantAcceleration2D<double>, CaRadar<double>>;
+template class SrUkf<ConstantVelocity2D<double>, CvRadar<double>>;
+template class SrUkf<ConstantAcceleration2D<float>, CaRadar<float>>;
+template class SrCdkf<ConstantVelocity2D<float>, CvRadar<float>>;
+template class SrCdkf<ConstantAcceleration2D<double>, CaRadar<double>>;
+template class Crpf<ConstantVelocity2D<double>, CvRadar<double>, 100>;
+template class Crpf<ConstantAcceleration2D<float>, CaRadar<float>, 16>;
+static_assert(TrackingFilter<Ukf<ConstantVelocity2D<double>, CvRadar<double>>>);
+static_assert(TrackingFilter<Cdkf<ConstantVelocity2D<float>, CvRadar<float>>>);
+static_assert(TrackingFilter<SrUkf<ConstantVelocity2D<double>, CvRadar<double>>>);
+static_assert(TrackingFilter<SrCdkf<ConstantVelocity2D<float>, CvRadar<float>>>);
+static_assert(TrackingFilter<Crpf<ConstantVelocity2D<double>, CvRadar<double>, 100>>);
+
+#define KESTREL_INSTANTIATE_SIGMA_HELPERS(S)                                       \
+  template class NormalGenerator<S>;                                               \
+  template Status cholesky_rank1_update<S, 4>(Mat<S, 4, 4>&, const Vec<S, 4>&, S); \
+  template Status cholesky_semidefinite<S, 4>(const Mat<S, 4, 4>&, Mat<S, 4, 4>&); \
   template Mat<S, 4, 4> triangularise<S, 4, 12>(const Mat<S, 4, 12>&);
 
-KESTREL_INSTANTIATE_SIGMA_FILTERS(double)
-KESTREL_INSTANTIATE_SIGMA_FILTERS(float)
+KESTREL_INSTANTIATE_SIGMA_HELPERS(double)
+KESTREL_INSTANTIATE_SIGMA_HELPERS(float)
 
-#undef KESTREL_INSTANTIATE_SIGMA_FILTERS
+#undef KESTREL_INSTANTIATE_SIGMA_HELPERS
 
 }  // namespace kestrel

@@ -1,8 +1,8 @@
 // Compiles the underwater tracker of kestrel/tracking/underwater_tracker.hpp
 // (CV-3D + sound speed, multipath TOA, channel-gated EKF, multilateration)
-// for every supported floating scalar under the firmware rules
-// (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning wall with -Werror),
-// at the UW-003 size (4 beacons) and at the most a sonar frame can name
+// for both floating scalars under the firmware rules (-fno-exceptions
+// -fno-rtti, EIGEN_NO_MALLOC, the warning wall with -Werror): float at the
+// UW-003 size (4 beacons), double at the most a sonar frame can name
 // (8 beacons, 16 channels). Nothing links against it.
 #include "kestrel/filters/channel_gated_ekf.hpp"
 #include "kestrel/models/measurement/multipath_toa.hpp"
@@ -13,17 +13,17 @@
 
 namespace kestrel {
 
+// Each scalar once and each size once: the templates' code does not depend
+// on the pairing, and every instantiation here costs tens of seconds of
+// compile time.
 template struct ConstantVelocity3DSoundSpeed<double>;
 template struct ConstantVelocity3DSoundSpeed<float>;
-template struct MultipathToa<ConstantVelocity3DSoundSpeed<double>, 4>;
-template struct MultipathToa<ConstantVelocity3DSoundSpeed<float>, 8>;
-template class ChannelGatedEkf<ConstantVelocity3DSoundSpeed<double>, MultipathToa<ConstantVelocity3DSoundSpeed<double>, 4>>;
+template struct MultipathToa<ConstantVelocity3DSoundSpeed<double>, 8>;
+template struct MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>;
 template class ChannelGatedEkf<ConstantVelocity3DSoundSpeed<float>, MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>>;
 template class ChannelGatedEkf<ConstantVelocity3DSoundSpeed<double>, MultipathToa<ConstantVelocity3DSoundSpeed<double>, 8>>;
-template class UnderwaterTracker<double, 4>;
 template class UnderwaterTracker<float, 4>;
 template class UnderwaterTracker<double, 8>;
-template class UnderwaterTracker<float, 8>;
 template UnderwaterTracker<float, 4> make_underwater_tracker<float, 4>(const UnderwaterTrackerParams&);
 template MultilaterationResult<float> multilaterate<MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>>(
     const MultipathToa<ConstantVelocity3DSoundSpeed<float>, 4>&,
@@ -31,7 +31,7 @@ template MultilaterationResult<float> multilaterate<MultipathToa<ConstantVelocit
     const MultilaterationConfig<float>&);
 
 // With every channel present the channel-gated EKF is a drop-in tracking filter.
-static_assert(TrackingFilter<UnderwaterTracker<double, 4>::Filter>);
-static_assert(TrackingFilter<UnderwaterTracker<float, 8>::Filter>);
+static_assert(TrackingFilter<UnderwaterTracker<float, 4>::Filter>);
+static_assert(TrackingFilter<UnderwaterTracker<double, 8>::Filter>);
 
 }  // namespace kestrel

@@ -14,6 +14,12 @@ namespace kestrel {
 /// Probability that a true measurement falls inside the gate.
 enum class GateProbability : std::uint8_t { k90 = 0, k95, k99, k995, k999 };
 
+/// The probability itself (the track score's miss term needs P_G).
+constexpr double gate_probability(GateProbability p) {
+  constexpr double kProbability[] = {0.90, 0.95, 0.99, 0.995, 0.999};
+  return kProbability[static_cast<int>(p)];
+}
+
 inline constexpr int kChiSquareMaxDim = 16;
 
 namespace detail {

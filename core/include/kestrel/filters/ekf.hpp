@@ -53,6 +53,7 @@
 #pragma once
 
 #include <concepts>
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -167,8 +168,31 @@ class Ekf {
   }
 
   /// Innovation of z against the current (predicted) state with the model's R.
-  /// Pure: the gate uses it before deciding to update.
-  Innov innovation(const MeasVec& z) const { return innovation(z, measurement_.noise()); }
+  /// Pure: the gate uses it before deciding to update. On the structured
+  /// batch path S and its factor come from the shared linearisation, so
+  /// each further plot costs its residual and one forward substitution.
+  Innov innovation(const MeasVec& z) const {
+    if constexpr (kSparseUpdate && kForm == EkfUpdateForm::kBatch) {
+      Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};
+      if (!all_finite(z)) {
+        out.status = Status::kNonFinite;
+        return out;
+      }
+      const auto& lin = factored_linearisation();
+      out.nu = measurement_.residual(z, lin.z_hat);
+      out.S = lin.S;
+      if (lin.factor_status == Status::kNonFinite || !all_finite(out.nu)) {
+        out.status = Status::kNonFinite;
+      } else if (lin.factor_status != Status::kOk) {
+        out.status = lin.factor_status;
+      } else {
+        out.d2 = structure::forward_substitute(lin.L, out.nu).squaredNorm();
+      }
+      return out;
+    } else {
+      return innovation(z, measurement_.noise());
+    }
+  }
 
   /// Innovation of z with an explicit measurement noise R.
   Innov innovation(const MeasVec& z, const MeasCov& R) const {
@@ -213,7 +237,19 @@ class Ekf {
 
   /// Update with z and the model's R.
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
-  [[nodiscard]] Status update(const MeasVec& z) { return update(z, measurement_.noise()); }
+  [[nodiscard]] Status update(const MeasVec& z) {
+    if constexpr (kSparseUpdate && kForm == EkfUpdateForm::kBatch) {
+      diag_.fused = false;
+      if (!all_finite(z)) return fail(Status::kNonFinite);
+      const auto& lin = factored_linearisation();
+      const MeasVec nu = measurement_.residual(z, lin.z_hat);
+      if (lin.factor_status == Status::kNonFinite || !all_finite(nu)) return fail(Status::kNonFinite);
+      if (lin.factor_status != Status::kOk) return fail(lin.factor_status);
+      return fold_in(nu, lin.S, lin.L);
+    } else {
+      return update(z, measurement_.noise());
+    }
+  }
 
   /// Update with z and an explicit R (see kForm and the header comment).
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
@@ -223,6 +259,85 @@ class Ekf {
     } else {
       return update_batch(z, R);
     }
+  }
+
+  /// Probabilistic data association update (Bar-Shalom and Tse, 1975; Bar-Shalom,
+  /// Willett and Tian, Tracking and Data Fusion, 2011, section 3.4): the
+  /// plots z[0..count) with association weights beta[j], and beta_none for
+  /// "none of them is the target". With w_j = L^-1 nu_j (S = L L^T),
+  /// w = sum beta_j w_j and U = P H^T L^-T:
+  ///   x+ = x + U w,
+  ///   P+ = P - U M U^T,  M = (1 - beta_none) I - (sum beta_j w_j w_j^T - w w^T),
+  /// which is the textbook beta_none P + (1 - beta_none) P_c + K (spread) K^T
+  /// written through the factor of S. The weights are the caller's
+  /// (association/pda.hpp). Batch form only (float and double).
+  /// @return kOk; kOutOfRange (count 0 or over kMax, a weight outside
+  ///         [0, 1]); kNonFinite or kNotPositiveDefinite (filter unchanged).
+  template <std::size_t kMax>
+    requires(kForm == EkfUpdateForm::kBatch)
+  [[nodiscard]] Status update_pda(const MeasVec (&z)[kMax], const Scalar (&beta)[kMax], std::size_t count,
+                                  Scalar beta_none) {
+    diag_.fused = false;
+    if (count == 0 || count > kMax) return fail(Status::kOutOfRange);
+    if (!(beta_none >= Scalar(0)) || !(beta_none <= Scalar(1))) return fail(Status::kOutOfRange);
+    MeasVec z_hat;
+    MeasCov S;
+    MeasCov L = MeasCov::Zero();
+    Mat<Scalar, kStateDim, kMeasDim> PHt;
+    if constexpr (kSparseUpdate) {
+      const auto& lin = factored_linearisation();
+      if (lin.factor_status != Status::kOk) return fail(lin.factor_status);
+      z_hat = lin.z_hat;
+      S = lin.S;
+      L = lin.L;
+      PHt = lin.J.p_ht(P_);
+    } else {
+      const auto H = measurement_.jacobian(x_);
+      const MeasCov R = measurement_.noise();
+      z_hat = measurement_.predict(x_);
+      S = symmetrised(H * P_ * H.transpose() + R);
+      if (!all_finite(H) || !all_finite(S) || !all_finite(z_hat)) return fail(Status::kNonFinite);
+      if (!structure::cholesky_lower(S, L)) return fail(Status::kNotPositiveDefinite);
+      PHt = P_ * H.transpose();
+    }
+    MeasVec w_mean = MeasVec::Zero();
+    MeasCov spread = MeasCov::Zero();  // sum beta_j w_j w_j^T
+    MeasVec nu_best = MeasVec::Zero();
+    Scalar beta_best(-1);
+    Scalar nis_best(0);
+    for (std::size_t j = 0; j < kMax; ++j) {
+      if (j >= count) break;
+      if (!(beta[j] >= Scalar(0)) || !(beta[j] <= Scalar(1))) return fail(Status::kOutOfRange);
+      if (!all_finite(z[j])) return fail(Status::kNonFinite);
+      const MeasVec nu = measurement_.residual(z[j], z_hat);
+      if (!all_finite(nu)) return fail(Status::kNonFinite);
+      const MeasVec w = structure::forward_substitute(L, nu);
+      w_mean += beta[j] * w;
+      spread += beta[j] * (w * w.transpose());
+      if (beta[j] > beta_best) {
+        beta_best = beta[j];
+        nu_best = nu;
+        nis_best = w.squaredNorm();
+      }
+    }
+    MeasCov M = -(spread - w_mean * w_mean.transpose());
+    for (int i = 0; i < kMeasDim; ++i) M(i, i) += Scalar(1) - beta_none;
+    Mat<Scalar, kStateDim, kMeasDim> U;
+    MeasVec unused;
+    structure::whitened_gain_factored(PHt, L, MeasVec::Zero().eval(), U, unused);
+    const State x = x_ + U * w_mean;
+    const Cov P = symmetrised(P_ - U * M * U.transpose());
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+
+    x_ = x;
+    P_ = P;
+    invalidate_linearisation();
+    diag_.innovation = nu_best;  // the plot of largest weight
+    diag_.innovation_variance = S.diagonal();
+    diag_.nis = nis_best;
+    diag_.fused = true;
+    diag_.status = Status::kOk;
+    return Status::kOk;
   }
 
  private:
@@ -279,10 +394,20 @@ class Ekf {
     MeasCov S = lin.HPHt;
     structure::add_symmetrised(S, R);
     if (!all_finite(lin.J.Hc) || !all_finite(nu) || !all_finite(S)) return fail(Status::kNonFinite);
+    MeasCov L = MeasCov::Zero();
+    if (!structure::cholesky_lower(S, L)) return fail(Status::kNotPositiveDefinite);
+    return fold_in(nu, S, L);
+  }
+
+  /// x + U w and P - U U^T from the residual and S = L L^T (structured path).
+  template <bool kEnabled = kSparseUpdate>
+    requires kEnabled
+  [[nodiscard]] Status fold_in(const MeasVec& nu, const MeasCov& S, const MeasCov& L) {
+    const auto& lin = linearisation();
     const Mat<Scalar, kStateDim, kMeasDim> PHt = lin.J.p_ht(P_);
     Mat<Scalar, kStateDim, kMeasDim> U;
     MeasVec w;
-    if (!structure::whitened_gain(PHt, S, nu, U, w)) return fail(Status::kNotPositiveDefinite);
+    structure::whitened_gain_factored(PHt, L, nu, U, w);
     const State x = x_ + U * w;
     const Cov P = structure::symmetric_downdate(P_, U);
     if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
@@ -445,7 +570,29 @@ class Ekf {
       lin_.z_hat = measurement_.predict(x_);
       lin_.J.Hc = measurement_.jacobian_columns(x_);
       lin_.HPHt = lin_.J.hpht(P_);
+      lin_.factor_valid = false;
       lin_.valid = true;
+    }
+    return lin_;
+  }
+
+  /// The linearisation with S = H P H^T + R for the model's own R and its
+  /// factor, computed on first use (an explicit-R caller such as R2-AEKF
+  /// never pays for them).
+  template <bool kEnabled = kSparseUpdate && kForm == EkfUpdateForm::kBatch>
+    requires kEnabled
+  const auto& factored_linearisation() const {
+    linearisation();
+    if (!lin_.factor_valid) {
+      const MeasCov R = measurement_.noise();
+      lin_.S = lin_.HPHt;
+      structure::add_symmetrised(lin_.S, R);
+      if (!all_finite(R) || !all_finite(lin_.J.Hc) || !all_finite(lin_.S)) {
+        lin_.factor_status = Status::kNonFinite;
+      } else {
+        lin_.factor_status = structure::cholesky_lower(lin_.S, lin_.L) ? Status::kOk : Status::kNotPositiveDefinite;
+      }
+      lin_.factor_valid = true;
     }
     return lin_;
   }

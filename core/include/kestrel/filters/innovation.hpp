@@ -11,6 +11,7 @@ namespace kestrel {
 
 template <class Scalar, int kMeasDim>
 struct Innovation {
+  static constexpr int kDim = kMeasDim;
   Vec<Scalar, kMeasDim> nu;           ///< z - h(x_pred), angles wrapped.
   Mat<Scalar, kMeasDim, kMeasDim> S;  ///< Innovation covariance H P H^T + R.
   Scalar d2;                          ///< nu^T S^-1 nu (NIS), unitless.

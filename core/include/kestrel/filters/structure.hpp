@@ -42,6 +42,7 @@
 #include "kestrel/math/finite.hpp"
 #include "kestrel/models/concepts.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
 
 namespace kestrel {
 
@@ -295,6 +296,20 @@ bool nis(const Mat<S, m, m>& Sm, const Vec<S, m>& nu, S& d2) {
   return true;
 }
 
+/// whitened_gain() (below) with the factor L of S = L L^T already known
+/// (lower triangular, positive diagonal).
+template <class S, int n, int m>
+void whitened_gain_factored(const Mat<S, n, m>& PHt, const Mat<S, m, m>& L, const Vec<S, m>& nu, Mat<S, n, m>& U,
+                            Vec<S, m>& w) {
+  w = forward_substitute(L, nu);
+  static_for<0, m>([&](auto ja) {
+    constexpr int j = decltype(ja)::value;
+    Vec<S, n> u = PHt.col(j);
+    static_for<0, j>([&](auto ka) { u -= U.col(decltype(ka)::value) * L(j, decltype(ka)::value); });
+    U.col(j) = u / L(j, j);
+  });
+}
+
 /// The measurement update through the Cholesky factor of S = L L^T:
 ///   w = L^-1 nu,   U = P H^T L^-T,
 /// so that, with K = P H^T S^-1 = U L^-1,
@@ -308,13 +323,7 @@ bool whitened_gain(const Mat<S, n, m>& PHt, const Mat<S, m, m>& Sm, const Vec<S,
                    Vec<S, m>& w) {
   Mat<S, m, m> L = Mat<S, m, m>::Zero();
   if (!cholesky_lower(Sm, L)) return false;
-  w = forward_substitute(L, nu);
-  static_for<0, m>([&](auto ja) {
-    constexpr int j = decltype(ja)::value;
-    Vec<S, n> u = PHt.col(j);
-    static_for<0, j>([&](auto ka) { u -= U.col(decltype(ka)::value) * L(j, decltype(ka)::value); });
-    U.col(j) = u / L(j, j);
-  });
+  whitened_gain_factored(PHt, L, nu, U, w);
   return true;
 }
 
@@ -421,6 +430,14 @@ struct Linearisation {
   typename H::Measurement z_hat = H::Measurement::Zero();             ///< h(x).
   SparseJacobian<H> J{SparseJacobian<H>::Compact::Zero()};             ///< Non-zero columns of dh/dx at x.
   typename SparseJacobian<H>::MeasCov HPHt = SparseJacobian<H>::MeasCov::Zero();  ///< H P H^T (exactly symmetric).
+  /// With the model's own R: S = H P H^T + R and its lower Cholesky factor,
+  /// shared by the innovation of every plot against this track and by the
+  /// update that follows (the per-pair work is then the residual and one
+  /// forward substitution); computed on first use (factor_valid).
+  typename SparseJacobian<H>::MeasCov S = SparseJacobian<H>::MeasCov::Zero();
+  typename SparseJacobian<H>::MeasCov L = SparseJacobian<H>::MeasCov::Zero();
+  Status factor_status = Status::kNotInitialised;  ///< kOk, kNonFinite (R, H or S) or kNotPositiveDefinite.
+  bool factor_valid = false;                   ///< false: S, L and factor_status to be recomputed.
   bool valid = false;                          ///< false: recompute before use.
 };
 

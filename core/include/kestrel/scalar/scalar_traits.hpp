@@ -33,6 +33,8 @@ struct FloatingScalarTraits {
   static F sin(F v) { return std::sin(v); }
   static F cos(F v) { return std::cos(v); }
   static F abs(F v) { return std::fabs(v); }
+  static F log(F v) { return std::log(v); }
+  static F exp(F v) { return std::exp(v); }
   static F max_value() { return std::numeric_limits<F>::max(); }
   /// (-pi, pi]: std::remainder gives [-pi, pi] with no loop; map -pi to +pi.
   /// Fast path: an angle already in (-pi, pi] is returned as is, which is

@@ -9,6 +9,13 @@
 
 namespace kestrel {
 
+/// A track manager's verdict on one track after a frame.
+enum class TrackVerdict : std::uint8_t {
+  kKeep,     ///< Nothing changes.
+  kConfirm,  ///< A tentative track becomes confirmed.
+  kDelete,   ///< The track is deleted.
+};
+
 template <class Filter>
 struct Track {
   using Scalar = typename Filter::Scalar;
@@ -30,6 +37,8 @@ struct Track {
   MeasVec innovation = MeasVec::Zero();  ///< nu of the latest association, measurement units.
   MeasVec innovation_variance = MeasVec::Zero();  ///< diag(S) of the latest association, measurement units squared.
   Scalar test_ratio{};                 ///< nis / gate threshold of the latest association (<= 1 inside).
+  Scalar score{};                      ///< Track score of a score-based manager (SequentialLlr), 0 otherwise.
+  Scalar score_peak{};                 ///< Highest score so far.
 };
 
 /// What the tracker publishes per reported track and frame.
@@ -52,6 +61,7 @@ struct TrackReport {
   MeasVec innovation = MeasVec::Zero();  ///< nu of the latest association (this frame's if associated).
   MeasVec innovation_variance = MeasVec::Zero();  ///< diag(S) of the latest association.
   Scalar test_ratio{};                 ///< nis / gate threshold of the latest association.
+  Scalar score{};                      ///< Track score (SequentialLlr), 0 under M-of-N.
   State x{};                           ///< State estimate, motion-model layout.
   Cov P{};                             ///< State covariance.
 };

@@ -1,8 +1,21 @@
 // The real-time loop of SPEC section 8: one call per frame,
 //   step(scan): validate -> predict every track to the frame time -> gate and
-//   associate (nearest neighbour, one measurement per track, confirmed tracks
-//   first) -> update -> initiate from unused measurements -> M-of-N
-//   confirmation and deletion -> reports.
+//   associate (confirmed tracks first, then tentative ones; one track per
+//   measurement) -> update ->
+//   initiate from unused measurements -> confirmation and deletion ->
+//   reports.
+// Composed at compile time of
+//   Filter       the estimator of every track (TrackingFilter);
+//   Initiator    how a track starts: two-point (a seed, then a pair) or
+//                single-point (kSinglePoint);
+//   Associator   who takes which measurement, over the gated pairs
+//                (NearestNeighbour, GlobalNearestNeighbour,
+//                ProbabilisticDataAssociation);
+//   Manager      when a track is confirmed or deleted (MOfN,
+//                SequentialLlr);
+//   capacities   kMaxTracks and kMaxMeasurements.
+// The tracker keeps what they share: validation, time, the gates, the
+// track table, the health rules below, statistics and reports.
 // Work is bounded by the capacities: kMaxTracks x kMaxMeasurements
 // innovations per frame at most, no allocation, no recursion. The per-track
 // passes visit the active slots only (TrackTable::active_slots()).
@@ -26,17 +39,19 @@
 // to start a new track.
 #pragma once
 
-#include <bit>
 #include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <span>
 
+#include "kestrel/association/chi_square.hpp"
 #include "kestrel/association/gate.hpp"
+#include "kestrel/association/nearest_neighbour.hpp"
 #include "kestrel/math/finite.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
 #include "kestrel/tracking/elapsed.hpp"
+#include "kestrel/tracking/m_of_n.hpp"
 #include "kestrel/tracking/measurement_scan.hpp"
 #include "kestrel/tracking/track.hpp"
 #include "kestrel/tracking/track_table.hpp"
@@ -56,6 +71,15 @@ concept TrackingFilter = requires(F& f, const F& cf, const typename F::State& x,
   { cf.P() } -> std::convertible_to<typename F::Cov>;
 };
 
+/// A filter that can fold several plots in at once with association
+/// weights (probabilistic association, association/pda.hpp).
+template <class F, std::size_t kMax>
+concept WeightedUpdateFilter = requires(F& f, const typename F::MeasVec (&z)[kMax],
+                                        const typename F::Scalar (&beta)[kMax], std::size_t n,
+                                        typename F::Scalar beta_none) {
+  { f.update_pda(z, beta, n, beta_none) } -> std::same_as<Status>;
+};
+
 /// Track-management and validation parameters.
 template <class Scalar, int kMeasDim>
 struct TrackerConfig {
@@ -67,9 +91,9 @@ struct TrackerConfig {
   /// there only turns a lagging filter into a dropped and re-started track,
   /// which resets its lag and flatters its error.
   Scalar gate_confirmed_threshold{};
-  std::uint8_t confirm_m = 2;          ///< Confirm with M associations ...
-  std::uint8_t confirm_n = 3;          ///< ... in the last N frames (N <= 8).
-  std::uint16_t max_coast_misses = 5;  ///< Delete a confirmed track after this many misses in a row.
+  std::uint8_t confirm_m = 2;          ///< MOfN: confirm with M associations ...
+  std::uint8_t confirm_n = 3;          ///< ... in the first N frames (N <= 8).
+  std::uint16_t max_coast_misses = 5;  ///< MOfN: delete a confirmed track after this many misses in a row.
   Scalar max_position_variance_m2{};   ///< Delete when var(x)+var(y) exceeds this, m^2.
   Vec<Scalar, kMeasDim> z_min{};       ///< Smallest valid measurement, per channel.
   Vec<Scalar, kMeasDim> z_max{};       ///< Largest valid measurement, per channel.
@@ -105,27 +129,92 @@ struct StepStats {
   bool resynced = false;        ///< The tracker restarted on this frame's clock (tracks deleted first).
 };
 
-template <TrackingFilter Filter, class Initiator, std::size_t kMaxTracks, std::size_t kMaxMeasurements>
+template <TrackingFilter Filter, class Initiator, std::size_t kMaxTracks, std::size_t kMaxMeasurements,
+          template <class, std::size_t, std::size_t> class Associator = NearestNeighbour,
+          template <class> class Manager = MOfN>
 class Tracker {
  public:
   using Scalar = typename Filter::Scalar;
   static constexpr int kMeasDim = Filter::kMeasDim;
   using MeasVec = typename Filter::MeasVec;
+  using Innov = Innovation<Scalar, kMeasDim>;
   using Scan = MeasurementScan<Scalar, kMeasDim, kMaxMeasurements>;
   using TrackT = Track<Filter>;
   using Report = TrackReport<Filter>;
   using Table = TrackTable<TrackT, kMaxTracks>;
   using Config = TrackerConfig<Scalar, kMeasDim>;
+  using AssociatorT = Associator<Scalar, kMaxTracks, kMaxMeasurements>;
+  using ManagerT = Manager<Scalar>;
   static_assert(kMaxMeasurements < 32768, "measurement indices are int16");
 
   /// @param prototype a filter holding the model parameters every track copies.
-  Tracker(const Filter& prototype, const Initiator& initiator, const Config& config)
-      : initiator_(initiator), config_(config) {
+  /// @param manager   the track manager with its own parameters (MOfN reads
+  ///                  its own from config).
+  Tracker(const Filter& prototype, const Initiator& initiator, const Config& config,
+          const ManagerT& manager = ManagerT{})
+      : initiator_(initiator), config_(config), manager_(manager) {
     prototype_.filter = prototype;
     gate_confirmed_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_confirmed);
     gate_tentative_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_tentative);
-    if (config.gate_confirmed_threshold > Scalar(0)) gate_confirmed_.threshold = config.gate_confirmed_threshold;
+    gate_probability_confirmed_ = probability_of(config.gate_confirmed);
+    gate_probability_tentative_ = probability_of(config.gate_tentative);
+    if (config.gate_confirmed_threshold > Scalar(0)) {
+      gate_confirmed_.threshold = config.gate_confirmed_threshold;
+      gate_probability_confirmed_ = Scalar(1);  // an explicit threshold is taken as "ungated"
+    }
+    manager_.configure(config_);
   }
+
+  /// The pairs one association pass offers the associator: the tracks of
+  /// one class that are predicted to this frame (index k, in table order)
+  /// against the measurements not yet used (index j).
+  class AssociationCandidates {
+   public:
+    using Innov = Tracker::Innov;
+    std::size_t tracks() const { return count_; }
+    std::size_t measurements() const { return scan_.count; }
+    bool free(std::size_t j) const { return !used_[j]; }
+    /// The innovation of measurement j against track k (pure).
+    Innov innovation(std::size_t k, std::size_t j) const {
+      return tracker_.table_[slot_[k]].filter.innovation(scan_.z[j]);
+    }
+    bool gated(const Innov& in) const { return gate_.accepts(in); }
+    Scalar gate_threshold() const { return gate_.threshold; }
+    /// P_G: the probability that the target's plot falls in the gate (1 for
+    /// an explicit threshold, which the tracker takes as "ungated").
+    Scalar gate_probability() const { return gate_probability_; }
+    /// Update track k with measurement j (`in`: its innovation). On success
+    /// j is used and k is hit; if the filter refuses, both stay open.
+    void assign(std::size_t k, std::size_t j, const Innov& in) {
+      tracker_.fold_in(slot_[k], scan_, j, in, gate_, used_, hit_, drop_);
+    }
+    /// Update track k with the measurements index[0..n) weighted by
+    /// beta[0..n), beta_none for none of them (probabilistic association;
+    /// the filter needs update_pda). On success all n are used.
+    template <class F = Filter>
+      requires WeightedUpdateFilter<F, kMaxMeasurements>
+    void assign_weighted(std::size_t k, const std::size_t (&index)[kMaxMeasurements],
+                         const Scalar (&beta)[kMaxMeasurements], std::size_t n, Scalar beta_none) {
+      tracker_.fold_in_weighted(slot_[k], scan_, index, beta, n, beta_none, gate_, used_, hit_, drop_);
+    }
+
+   private:
+    friend class Tracker;
+    AssociationCandidates(Tracker& tracker, const Scan& scan, const EllipsoidalGate<Scalar, kMeasDim>& gate,
+                          Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
+                          bool (&drop)[kMaxTracks])
+        : tracker_(tracker), scan_(scan), gate_(gate), gate_probability_(gate_probability), used_(used), hit_(hit),
+          drop_(drop) {}
+    Tracker& tracker_;
+    const Scan& scan_;
+    const EllipsoidalGate<Scalar, kMeasDim>& gate_;
+    Scalar gate_probability_;
+    bool (&used_)[kMaxMeasurements];
+    bool (&hit_)[kMaxTracks];
+    bool (&drop_)[kMaxTracks];
+    std::size_t slot_[kMaxTracks] = {};
+    std::size_t count_ = 0;
+  };
 
   /// Process one frame.
   /// @return kOk; kMalformedFrame (count over capacity); kNonFinite; kOutOfRange
@@ -161,8 +250,8 @@ class Tracker {
     bool drop[kMaxTracks] = {};
 
     predict_all(scan.t_us, existed, drop);
-    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, used, hit, drop);
-    associate(scan, TrackStatus::kTentative, gate_tentative_, used, hit, drop);
+    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, gate_probability_confirmed_, used, hit, drop);
+    associate(scan, TrackStatus::kTentative, gate_tentative_, gate_probability_tentative_, used, hit, drop);
     initiate_from_seeds(scan, used, hit);
     seed_new(scan, used, hit);
     manage(existed, hit, drop);
@@ -232,6 +321,16 @@ class Tracker {
     ++resyncs_;
   }
 
+  /// P_G in the scalar, converted at compile time (no double work on a board).
+  static Scalar probability_of(GateProbability p) {
+    using T = ScalarTraits<Scalar>;
+    constexpr Scalar kProbability[] = {
+        T::from_double(gate_probability(GateProbability::k90)), T::from_double(gate_probability(GateProbability::k95)),
+        T::from_double(gate_probability(GateProbability::k99)), T::from_double(gate_probability(GateProbability::k995)),
+        T::from_double(gate_probability(GateProbability::k999))};
+    return kProbability[static_cast<int>(p)];
+  }
+
   static Scalar seconds(std::int64_t dt_us) {
     return ScalarTraits<Scalar>::from_ratio(dt_us, 1000000);
   }
@@ -265,50 +364,92 @@ class Tracker {
     }
   }
 
-  /// Nearest neighbour: each track of `status` takes the unused measurement
-  /// with the smallest d2 inside its gate. Order: table order, which is age
-  /// order for a table that only grows, so older tracks choose first.
+  /// One association pass over the tracks of `status` that were predicted
+  /// to this frame, in table order (age order for a table that only grows).
   void associate(const Scan& scan, TrackStatus status, const EllipsoidalGate<Scalar, kMeasDim>& gate,
-                 bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+                 Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
+                 bool (&drop)[kMaxTracks]) {
+    AssociationCandidates c(*this, scan, gate, gate_probability, used, hit, drop);
     for (const std::size_t i : table_.active_slots()) {
-      if (table_[i].status != status || !table_[i].initialised || drop[i]) continue;
-      TrackT& tr = table_[i];
+      const TrackT& tr = table_[i];
+      if (tr.status != status || !tr.initialised || drop[i]) continue;
       if (tr.t_us != scan.t_us) continue;  // prediction failed this frame
-      std::size_t best = kMaxMeasurements;
-      Scalar best_d2{};
-      MeasVec best_nu = MeasVec::Zero();
-      MeasVec best_s = MeasVec::Zero();
-      for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
-        if (j >= scan.count) break;
-        if (used[j]) continue;
-        const auto in = tr.filter.innovation(scan.z[j]);
-        if (!gate.accepts(in)) continue;
-        if (best == kMaxMeasurements || in.d2 < best_d2) {
-          best = j;
-          best_d2 = in.d2;
-          best_nu = in.nu;
-          best_s = in.S.diagonal();
-        }
-      }
-      if (best == kMaxMeasurements) continue;
-      if (const Status s = tr.filter.update(scan.z[best]); s != Status::kOk) {
-        ++stats_.filter_failures;
-        if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
-          drop[i] = true;
-          ++stats_.unhealthy;
-        }
-        continue;
-      }
-      used[best] = true;
-      hit[i] = true;
-      tr.associated = true;
-      tr.measurement_index = static_cast<std::int16_t>(best);
-      tr.nis = best_d2;
-      tr.innovation = best_nu;
-      tr.innovation_variance = best_s;
-      tr.test_ratio = best_d2 / gate.threshold;
-      ++stats_.associated;
+      c.slot_[c.count_++] = i;
     }
+    if (c.count_ > 0) associator_.associate(c);
+  }
+
+  /// Update track `slot` with measurement j; record the association.
+  void fold_in(std::size_t slot, const Scan& scan, std::size_t j, const Innov& in,
+               const EllipsoidalGate<Scalar, kMeasDim>& gate, bool (&used)[kMaxMeasurements],
+               bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+    if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
+    TrackT& tr = table_[slot];
+    if (const Status s = tr.filter.update(scan.z[j]); s != Status::kOk) {
+      ++stats_.filter_failures;
+      if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
+        drop[slot] = true;
+        ++stats_.unhealthy;
+      }
+      return;
+    }
+    used[j] = true;
+    hit[slot] = true;
+    tr.associated = true;
+    tr.measurement_index = static_cast<std::int16_t>(j);
+    tr.nis = in.d2;
+    tr.innovation = in.nu;
+    tr.innovation_variance = in.S.diagonal();
+    tr.test_ratio = in.d2 / gate.threshold;
+    manager_.hit(tr, in);
+    ++stats_.associated;
+  }
+
+  /// Update track `slot` with several measurements and their weights
+  /// (AssociationCandidates::assign_weighted); the report names the plot of
+  /// largest weight.
+  template <class F = Filter>
+    requires WeightedUpdateFilter<F, kMaxMeasurements>
+  void fold_in_weighted(std::size_t slot, const Scan& scan, const std::size_t (&index)[kMaxMeasurements],
+                        const Scalar (&beta)[kMaxMeasurements], std::size_t n, Scalar beta_none,
+                        const EllipsoidalGate<Scalar, kMeasDim>& gate, bool (&used)[kMaxMeasurements],
+                        bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+    if (slot >= kMaxTracks || hit[slot] || n == 0 || n > kMaxMeasurements) return;  // associator contract
+    MeasVec z[kMaxMeasurements];
+    std::size_t best = kMaxMeasurements;
+    for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
+      if (i >= n) break;
+      if (index[i] >= scan.count || used[index[i]]) return;  // associator contract
+      z[i] = scan.z[index[i]];
+      if (best == kMaxMeasurements || beta[i] > beta[best]) best = i;
+    }
+    TrackT& tr = table_[slot];
+    const Innov in = tr.filter.innovation(z[best]);  // before the update: the manager scores it
+    if (const Status s = tr.filter.update_pda(z, beta, n, beta_none); s != Status::kOk) {
+      ++stats_.filter_failures;
+      if (s == Status::kNotPositiveDefinite) {
+        drop[slot] = true;
+        ++stats_.unhealthy;
+      }
+      return;
+    }
+    for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
+      if (i >= n) break;
+      used[index[i]] = true;
+    }
+    hit[slot] = true;
+    tr.associated = true;
+    tr.measurement_index = static_cast<std::int16_t>(index[best]);
+    tr.nis = in.d2;
+    tr.innovation = in.nu;
+    tr.innovation_variance = in.S.diagonal();
+    tr.test_ratio = in.d2 / gate.threshold;
+    if constexpr (requires { manager_.hit_weighted(tr, beta_none); }) {
+      manager_.hit_weighted(tr, beta_none);  // the evidence of the whole gate
+    } else {
+      manager_.hit(tr, in);
+    }
+    ++stats_.associated;
   }
 
   /// A seed pairs with the unused measurement of lowest pairing cost.
@@ -346,6 +487,8 @@ class Tracker {
         tr.t_us = scan.t_us;
         tr.associated = true;
         tr.measurement_index = static_cast<std::int16_t>(best);
+        // The pairing plot is evidence too: scored against the state it started.
+        if constexpr (ManagerT::kScoresInnovations) manager_.hit(tr, tr.filter.innovation(scan.z[best]));
         ++stats_.initiated;
       }
     }
@@ -381,6 +524,7 @@ class Tracker {
       tr.t_us = scan.t_us;
       tr.associated = true;
       tr.measurement_index = static_cast<std::int16_t>(j);
+      manager_.start(tr);
       if constexpr (Initiator::kSinglePoint) {
         if (tr.filter.reset(x, P) != Status::kOk) {
           table_.release(slot);
@@ -418,14 +562,13 @@ class Tracker {
     return true;
   }
 
-  /// M-of-N confirmation (the seed frame counts as the first hit); deletion of seeds that found no partner, of
-  /// tentative tracks that can no longer reach M, of confirmed tracks after
-  /// max_coast_misses, of tracks marked to drop this frame (stale or
-  /// unhealthy), of any track with a variance that is not positive and
-  /// finite, and of any track whose position variance exceeds the limit.
+  /// The frame's bookkeeping (history, age, hits, misses), then the
+  /// manager's verdict on every initialised track; a seed lives one frame.
+  /// Deleted besides, whatever the manager says: tracks marked to drop this
+  /// frame (stale or unhealthy), any track with a variance that is not
+  /// positive and finite, and any track whose position variance exceeds
+  /// the limit.
   void manage(const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks], const bool (&drop)[kMaxTracks]) {
-    const std::uint8_t window =
-        static_cast<std::uint8_t>(config_.confirm_n >= 8 ? 0xFFu : (1u << config_.confirm_n) - 1u);
     for (const std::size_t i : table_.active_slots()) {  // releases only slot i
       TrackT& tr = table_[i];
       if (existed[i]) {
@@ -444,22 +587,14 @@ class Tracker {
       bool remove = false;
       if (!tr.initialised) {
         remove = existed[i] && !hit[i];  // a seed lives one frame
-      } else if (tr.status == TrackStatus::kTentative) {
-        // The window is anchored at the track's start: confirm once M of its
-        // frames so far are hits; give up as soon as M can no longer be met
-        // within the first N frames (hits so far + frames left < M), which
-        // includes N frames passing without confirmation.
-        const int recent = std::popcount(static_cast<unsigned>(tr.history & window));
-        const int frames_so_far = tr.age + 1;
-        const int frames_left = frames_so_far >= config_.confirm_n ? 0 : config_.confirm_n - frames_so_far;
-        if (recent >= config_.confirm_m) {
+      } else {
+        const TrackVerdict v = manager_.judge(tr, hit[i]);
+        if (v == TrackVerdict::kConfirm && tr.status == TrackStatus::kTentative) {
           tr.status = TrackStatus::kConfirmed;
           ++stats_.confirmed;
-        } else if (recent + frames_left < config_.confirm_m) {
+        } else if (v == TrackVerdict::kDelete) {
           remove = true;
         }
-      } else if (tr.misses > config_.max_coast_misses) {
-        remove = true;
       }
       if (drop[i]) {
         remove = true;
@@ -496,6 +631,7 @@ class Tracker {
       r.innovation = tr.innovation;
       r.innovation_variance = tr.innovation_variance;
       r.test_ratio = tr.test_ratio;
+      r.score = tr.score;
       r.x = tr.filter.x();
       r.P = tr.filter.P();
     }
@@ -503,9 +639,13 @@ class Tracker {
 
   Initiator initiator_;
   Config config_;
+  ManagerT manager_;
+  AssociatorT associator_{};
   TrackT prototype_{};
   EllipsoidalGate<Scalar, kMeasDim> gate_confirmed_{};
   EllipsoidalGate<Scalar, kMeasDim> gate_tentative_{};
+  Scalar gate_probability_confirmed_{};
+  Scalar gate_probability_tentative_{};
   Table table_{};
   Report reports_[kMaxTracks]{};
   std::size_t report_count_ = 0;

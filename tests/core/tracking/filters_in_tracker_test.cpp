@@ -1,0 +1,129 @@
+// Every filter of the family inside the same Tracker on S1 (seed 1, tuned
+// qj = 160, the HAL's integer plots, the default gate): the track starts by
+// two points, is confirmed, and is held by one track to the end, in double
+// and in float, with a position error at most 1.5 times the EKF's in the
+// same run.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+
+#include "core/scalar/s1_integer_scenario.hpp"
+#include "kestrel/filters/cdkf.hpp"
+#include "kestrel/filters/crpf.hpp"
+#include "kestrel/filters/sr_cdkf.hpp"
+#include "kestrel/filters/sr_ukf.hpp"
+#include "kestrel/filters/ukf.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
+
+namespace {
+
+using kestrel::Status;
+
+template <class M, class H>
+using Crpf100 = kestrel::Crpf<M, H, 100>;
+
+struct S1Run {
+  bool all_frames_accepted = true;
+  int first_report = -1;         ///< Frame of the first confirmed report.
+  int frames_reported = 0;       ///< Frames with exactly one report, of the first track.
+  int extra_tracks = 0;          ///< Reports of any other track id.
+  double rms_position_m = 0;     ///< Over the frames reported.
+  std::uint16_t filter_failures = 0;  ///< Filter refusals counted by the tracker.
+};
+
+template <template <class, class> class FilterT, class S>
+S1Run run_s1_with() {
+  using Motion = kestrel::CaMotion<S>;
+  using Radar = kestrel::CaPolarRadar<S>;
+  using F = FilterT<Motion, Radar>;
+  using Tracker = kestrel::Tracker<F, kestrel::TwoPointInitiator<Motion, Radar>, 4, 4>;
+  const kestrel::RadarTrackerParams p = kestrel::test::tuned_params();
+  const auto s = kestrel::radar_tracker_scalars<S>(p);
+  Motion motion;
+  motion.qj = s.qj;
+  Radar radar;
+  radar.sigma_range_m = s.sigma_range_m;
+  radar.sigma_bearing_rad = s.sigma_bearing_rad;
+  Tracker tracker(F(motion, radar), {radar, s.max_speed_mps, s.init_accel_sigma_mps2},
+                  kestrel::radar_tracker_config<S>(p, s));
+
+  S1Run out;
+  kestrel::test::S1Options o;
+  o.seed = 1;
+  o.tuned = true;
+  kestrel::test::SplitMix64 rng(o.seed);
+  typename Tracker::Scan scan;
+  std::uint32_t id = 0;
+  double sum_sq = 0;
+  for (int k = 0; k < o.steps; ++k) {
+    const auto sample = kestrel::test::s1_sample(k, o, rng);
+    REQUIRE(kestrel::hal::to_scan(kestrel::test::s1_frame(sample), scan) == Status::kOk);
+    if (tracker.step(scan) != Status::kOk) out.all_frames_accepted = false;
+    out.filter_failures = static_cast<std::uint16_t>(out.filter_failures + tracker.last_step().filter_failures);
+    for (const auto& r : tracker.reports()) {
+      if (id == 0) {
+        id = r.track_id;
+        out.first_report = k;
+      }
+      if (r.track_id != id) {
+        ++out.extra_tracks;
+        continue;
+      }
+      ++out.frames_reported;
+      const double ex = static_cast<double>(r.x(0)) - kestrel::ScalarTraits<kestrel::Q31_32>::to_double(sample.x_m);
+      const double ey = static_cast<double>(r.x(3)) - kestrel::ScalarTraits<kestrel::Q31_32>::to_double(sample.y_m);
+      sum_sq += ex * ex + ey * ey;
+    }
+  }
+  out.rms_position_m = out.frames_reported > 0 ? std::sqrt(sum_sq / out.frames_reported) : 0.0;
+  return out;
+}
+
+template <template <class, class> class FilterT, class S>
+void check_holds_s1(const char* name) {
+  const S1Run ekf = run_s1_with<kestrel::Ekf, S>();
+  const S1Run run = run_s1_with<FilterT, S>();
+  INFO(name << ": first report at frame " << run.first_report << ", " << run.frames_reported
+            << " frames reported, rms " << run.rms_position_m << " m (EKF " << ekf.rms_position_m << " m), "
+            << run.filter_failures << " filter refusals, " << run.extra_tracks << " reports of other tracks");
+  CHECK(run.all_frames_accepted);
+  CHECK(run.first_report >= 1);
+  CHECK(run.first_report <= 2);
+  CHECK(run.frames_reported == 300 - run.first_report);
+  CHECK(run.extra_tracks == 0);
+  CHECK(run.rms_position_m <= 1.5 * ekf.rms_position_m);
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("Scenario: the UKF holds S1 inside the tracker", "[tracker][filters]", double, float) {
+  check_holds_s1<kestrel::Ukf, TestType>("UKF");
+}
+TEMPLATE_TEST_CASE("Scenario: the CDKF holds S1 inside the tracker", "[tracker][filters]", double, float) {
+  check_holds_s1<kestrel::Cdkf, TestType>("CDKF");
+}
+TEST_CASE("Scenario: the SR-UKF holds S1 inside the tracker - double", "[tracker][filters]") {
+  check_holds_s1<kestrel::SrUkf, double>("SR-UKF");
+}
+TEST_CASE("Scenario: the SR-CDKF holds S1 inside the tracker - double", "[tracker][filters]") {
+  check_holds_s1<kestrel::SrCdkf, double>("SR-CDKF");
+}
+
+// Known defects, measured (docs/filters.md, "Inside the tracker"): these
+// run and are expected to fail until fixed; a pass fails the case, so the
+// tag must then be removed. In float the square-root forms refuse updates
+// early in S1 (SR-UKF 60 refusals, SR-CDKF 38: the rank-1 downdates of the
+// factor lose positive definiteness) and the track is lost; the CRPF loses
+// the gated track after 14 frames with 100 particles (26 with 300, 28 with
+// 1,000 in float), so the particle count is not the cause.
+TEST_CASE("Scenario: the SR-UKF holds S1 inside the tracker - float (known defect)", "[tracker][filters][!shouldfail]") {
+  check_holds_s1<kestrel::SrUkf, float>("SR-UKF");
+}
+TEST_CASE("Scenario: the SR-CDKF holds S1 inside the tracker - float (known defect)",
+          "[tracker][filters][!shouldfail]") {
+  check_holds_s1<kestrel::SrCdkf, float>("SR-CDKF");
+}
+TEMPLATE_TEST_CASE("Scenario: the CRPF (100 particles) holds S1 inside the tracker (known defect)",
+                   "[tracker][filters][!shouldfail]", double, float) {
+  check_holds_s1<Crpf100, TestType>("CRPF-100");
+}
