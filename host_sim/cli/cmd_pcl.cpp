@@ -35,6 +35,11 @@ std::uint8_t small_count(unsigned v, const char* what) {
   return static_cast<std::uint8_t>(v);
 }
 
+std::string manager_label(const PclTrackerParams& p, ManagerChoice m) {
+  if (m == ManagerChoice::kScore) return "track score";
+  return std::to_string(p.confirm_m) + "-of-" + std::to_string(p.confirm_n);
+}
+
 void print_ci(const char* name, const MeanCi& m, const char* unit) {
   std::printf("  %-34s %9.4f  [%.4f, %.4f] %s (n = %zu)\n", name, m.mean, m.ci95_low, m.ci95_high, unit, m.n);
 }
@@ -57,6 +62,15 @@ CLI::App* add_pcl_command(CLI::App& app, PclOptions& o) {
   cmd->add_option("--gate-confirmed", o.gate_confirmed, "Gate probability of confirmed tracks (default 0.99)");
   cmd->add_option("--min-start-doppler-hz", o.min_start_doppler_hz, "No track start below this |fD|, Hz (default 2)");
   cmd->add_option("--max-coast-misses", o.max_coast_misses, "Misses before a confirmed track is deleted (default 6)");
+  cmd->add_option("--associator", o.associator, "nn, gnn or pda")->capture_default_str();
+  cmd->add_option("--manager", o.manager, "m-of-n or score (sequential log-likelihood ratio)")->capture_default_str();
+  cmd->add_option("--detection-probability", o.detection_probability,
+                  "P_D for pda and score (default: the scenario's)");
+  cmd->add_option("--clutter-density", o.clutter_density,
+                  "False candidates per m x m/s and frame, for pda and score (default: the scenario's)");
+  cmd->add_option("--new-target-density", o.new_target_density, "New targets per m x m/s and frame, for score");
+  cmd->add_option("--false-track-probability", o.false_track_probability, "alpha of score's confirmation test");
+  cmd->add_option("--missed-track-probability", o.missed_track_probability, "beta of score's confirmation test");
   return cmd;
 }
 
@@ -71,6 +85,31 @@ int cmd_pcl(const PclOptions& o) {
   if (o.gate_confirmed) params.gate_confirmed = gate_from(*o.gate_confirmed);
   if (o.min_start_doppler_hz) params.min_start_doppler_hz = *o.min_start_doppler_hz;
   if (o.max_coast_misses) params.max_coast_misses = static_cast<std::uint16_t>(*o.max_coast_misses);
+  const auto probability = [](double v, const char* what) {
+    if (!(v > 0.0 && v < 1.0)) throw std::invalid_argument(std::string(what) + " must be in (0, 1)");
+    return v;
+  };
+  const auto density = [](double v, const char* what) {
+    if (!(v > 0.0 && std::isfinite(v))) throw std::invalid_argument(std::string(what) + " must be positive");
+    return v;
+  };
+  if (o.detection_probability) {
+    params.pda.detection_probability = probability(*o.detection_probability, "--detection-probability");
+    params.score.detection_probability = params.pda.detection_probability;
+  }
+  if (o.clutter_density) {
+    params.score.clutter_density = density(*o.clutter_density, "--clutter-density");
+    params.pda.clutter_density = params.score.clutter_density;
+  }
+  if (o.new_target_density) {
+    params.score.new_target_density = density(*o.new_target_density, "--new-target-density");
+  }
+  if (o.false_track_probability) {
+    params.score.false_track_probability = probability(*o.false_track_probability, "--false-track-probability");
+  }
+  if (o.missed_track_probability) {
+    params.score.missed_track_probability = probability(*o.missed_track_probability, "--missed-track-probability");
+  }
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
 
@@ -79,6 +118,8 @@ int cmd_pcl(const PclOptions& o) {
   config.base_seed = o.seed;
   config.jobs = o.jobs;
   config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  config.policies.associator = policy_by_name(kAssociatorNames, o.associator, "associator");
+  config.policies.manager = policy_by_name(kManagerNames, o.manager, "track manager");
 
   const PclMonteCarloResult mc = run_pcl_monte_carlo(scenario, params, config);
   const PclSummary s = summarise_pcl(mc.runs, config.budget_ns);
@@ -90,15 +131,15 @@ int cmd_pcl(const PclOptions& o) {
   write_pcl_run_csvs(dir, scenario, mc.first_run, mc.first_output, config.tolerance);
   write_json_file(dir / "pcl_summary.json", pcl_summary_json(scenario, params, config, s));
   if (o.plots) {
-    plot_pcl(dir, scenario.name + " / PCL KF, " + std::to_string(params.confirm_m) + "-of-" +
-                      std::to_string(params.confirm_n) + " / seed " + std::to_string(o.seed));
+    plot_pcl(dir, scenario.name + " / PCL KF, " + std::string(policy_name(kAssociatorNames, config.policies.associator)) +
+                      ", " + manager_label(params, config.policies.manager) + " / seed " + std::to_string(o.seed));
   }
 
-  std::printf("%s: %zu runs (seeds %llu..%llu), PCL KF sa %g m/s^2, %u-of-%u, no start below %g Hz\n",
+  std::printf("%s: %zu runs (seeds %llu..%llu), PCL KF sa %g m/s^2, %s, %s, no start below %g Hz\n",
               scenario.name.c_str(), s.runs, static_cast<unsigned long long>(o.seed),
               static_cast<unsigned long long>(o.seed + o.runs - 1), params.accel_sigma_mps2,
-              static_cast<unsigned>(params.confirm_m), static_cast<unsigned>(params.confirm_n),
-              params.min_start_doppler_hz);
+              std::string(policy_name(kAssociatorNames, config.policies.associator)).c_str(),
+              manager_label(params, config.policies.manager).c_str(), params.min_start_doppler_hz);
   std::printf("  mean over runs [95 %% interval]:\n");
   print_ci("association accuracy", s.association_accuracy, "");
   print_ci("coverage after confirmation", s.coverage, "");

@@ -29,6 +29,12 @@ struct PclOptions {
   std::optional<unsigned> confirm_m, confirm_n, max_coast_misses;
   std::optional<double> gate_tentative, gate_confirmed;  ///< 0.90, 0.95, 0.99, 0.995 or 0.999.
   std::optional<double> min_start_doppler_hz;
+  // Policies (pipeline/tracker_policies.hpp) and their parameters (unset =
+  // the scenario's sensor: its P_D and clutter density).
+  std::string associator = "nn";
+  std::string manager = "m-of-n";
+  std::optional<double> detection_probability, clutter_density, new_target_density;
+  std::optional<double> false_track_probability, missed_track_probability;
 };
 
 /// Register the subcommand and its options on `app`.

@@ -24,7 +24,7 @@ PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioConfig& scenario, const
       try {
         const std::uint64_t seed = config.base_seed + i;
         PclScenarioRun run = generate_pcl(scenario, seed);
-        PclRunOutput out = run_pcl(run, scenario, params, config.budget_ns);
+        PclRunOutput out = run_pcl(run, scenario, params, config.policies, config.budget_ns);
         result.runs[i] = score_pcl_run(run, out, config.tolerance);
         result.runs[i].seed = seed;
         if (i == 0) {  // only the worker that takes i == 0 writes these

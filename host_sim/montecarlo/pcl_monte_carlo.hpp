@@ -20,6 +20,7 @@ struct PclMonteCarloConfig {
   std::uint64_t base_seed = 0;
   unsigned jobs = 1;
   std::uint64_t budget_ns = 1'000'000;  ///< Step overrun threshold.
+  TrackerPolicies policies;             ///< Associator and track manager.
   PclTolerance tolerance;
 };
 

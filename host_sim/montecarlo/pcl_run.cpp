@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "kestrel/association/global_nearest_neighbour.hpp"
 #include "kestrel/hal/frame_codec.hpp"
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/hal/pcl_adapter.hpp"
@@ -27,16 +28,18 @@ std::vector<std::uint8_t> encode_pcl_stream(const PclScenarioRun& run) {
   return bytes;
 }
 
-template <std::size_t kTracks, std::size_t kCandidates>
+template <std::size_t kTracks, std::size_t kCandidates, template <class, std::size_t, std::size_t> class Associator,
+          template <class> class Manager>
 PclRunOutput run_typed(const PclScenarioRun& run, const PclTrackerParams& params, std::uint64_t budget_ns) {
-  using Tracker = PclTracker<PclKf<double>, kTracks, kCandidates>;
+  using Tracker = PclTracker<PclKf<double>, kTracks, kCandidates, Associator, Manager>;
   using Report = typename Tracker::Report;
   using Adapter = hal::PclAdapter<Tracker>;
   using Sink = host::MemorySink<Report>;
   using Runner = hal::Runner<host::Feed, host::Clock, Tracker, Adapter, Sink>;
 
   // The tracker holds the whole track table: keep it off the stack.
-  auto tracker = std::make_unique<Tracker>(make_pcl_tracker<double, kTracks, kCandidates>(params));
+  auto tracker =
+      std::make_unique<Tracker>(make_pcl_tracker<double, kTracks, kCandidates, Associator, Manager>(params));
   host::StreamFileFeed feed(encode_pcl_stream(run));
   host::SteadyClock clock;
   Sink sink(run.frames.size() * kTracks);
@@ -127,13 +130,46 @@ PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario) {
   p.carrier_hz = scenario.carrier_hz;
   p.sigma_rb_m = scenario.sigma_rb_m;
   p.sigma_doppler_hz = scenario.sigma_fd_hz;
+  // Clutter is uniform over Rb x fD; the tracker measures dRb = -lambda fD.
+  const double volume = scenario.clutter_rb_max_m * 2.0 * scenario.clutter_fd_max_hz * pcl_lambda_m(scenario);
+  p.pda.detection_probability = scenario.pd;
+  p.pda.clutter_density = scenario.clutter_mean / volume;
+  p.score.detection_probability = scenario.pd;
+  p.score.clutter_density = p.pda.clutter_density;
   return p;
 }
 
+namespace {
+
+template <std::size_t kTracks, std::size_t kCandidates, template <class, std::size_t, std::size_t> class Associator>
+PclRunOutput run_with_manager(const PclScenarioRun& run, const PclTrackerParams& params, ManagerChoice manager,
+                              std::uint64_t budget_ns) {
+  if (manager == ManagerChoice::kScore)
+    return run_typed<kTracks, kCandidates, Associator, SequentialLlr>(run, params, budget_ns);
+  return run_typed<kTracks, kCandidates, Associator, MOfN>(run, params, budget_ns);
+}
+
+template <std::size_t kTracks, std::size_t kCandidates>
+PclRunOutput run_composed(const PclScenarioRun& run, const PclTrackerParams& params, const TrackerPolicies& policies,
+                          std::uint64_t budget_ns) {
+  switch (policies.associator) {
+    case AssociatorChoice::kGlobalNearestNeighbour:
+      return run_with_manager<kTracks, kCandidates, GlobalNearestNeighbour>(run, params, policies.manager, budget_ns);
+    case AssociatorChoice::kPda:
+      return run_with_manager<kTracks, kCandidates, ProbabilisticDataAssociation>(run, params, policies.manager,
+                                                                                   budget_ns);
+    case AssociatorChoice::kNearestNeighbour:
+      break;
+  }
+  return run_with_manager<kTracks, kCandidates, NearestNeighbour>(run, params, policies.manager, budget_ns);
+}
+
+}  // namespace
+
 PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
-                     std::uint64_t budget_ns) {
-  if (scenario.scan_capacity == 32) return run_typed<kPclMaxTracks, 32>(run, params, budget_ns);
-  if (scenario.scan_capacity == 64) return run_typed<2 * kPclMaxTracks, 64>(run, params, budget_ns);
+                     const TrackerPolicies& policies, std::uint64_t budget_ns) {
+  if (scenario.scan_capacity == 32) return run_composed<kPclMaxTracks, 32>(run, params, policies, budget_ns);
+  if (scenario.scan_capacity == 64) return run_composed<2 * kPclMaxTracks, 64>(run, params, policies, budget_ns);
   (void)pcl_track_capacity(scenario.scan_capacity);  // throws with the message
   return {};
 }

@@ -15,6 +15,7 @@
 #include "kestrel/hal/runner.hpp"
 #include "kestrel/status.hpp"
 #include "kestrel/tracking/pcl_tracker.hpp"
+#include "pipeline/tracker_policies.hpp"
 #include "scenarios/pcl002.hpp"
 
 namespace kestrel::sim {
@@ -52,14 +53,17 @@ struct PclRunOutput {
   hal::RunnerStats stats;
 };
 
-/// The tracker parameters that match a scenario's sensor (carrier, sigma_Rb,
-/// sigma_fD); the track-management defaults are PclTrackerParams'.
+/// The tracker parameters that match a scenario's sensor: carrier,
+/// sigma_Rb, sigma_fD, and for the policies that read them P_D and the
+/// clutter density (the false-alarm rate a sensor's CFAR is set for); the
+/// track-management defaults are PclTrackerParams'.
 PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario);
 
-/// Run the PCL tracker with `params` over the run's frames. The scan
-/// capacity is the scenario's (32 or 64; others throw std::invalid_argument).
+/// Run the PCL tracker composed of `policies` with `params` over the run's
+/// frames. The scan capacity is the scenario's (32 or 64; others throw
+/// std::invalid_argument).
 PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
-                     std::uint64_t budget_ns);
+                     const TrackerPolicies& policies, std::uint64_t budget_ns);
 
 /// Track-table capacity used with each scan capacity.
 std::size_t pcl_track_capacity(std::size_t scan_capacity);

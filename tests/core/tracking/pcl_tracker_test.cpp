@@ -390,3 +390,48 @@ SCENARIO("PCL step allocates nothing with full frames of clutter and a target", 
     CHECK(target_reports >= 1);
   }
 }
+
+SCENARIO("the track score starts a single-point track below T_d, confirms it on evidence and deletes a tentative "
+         "one T_d below its peak",
+         "[pcl][tracker][llr]") {
+  using ScoredT = kestrel::PclTracker<kestrel::PclKf<double>, kTracks, kCandidates, kestrel::NearestNeighbour,
+                                      kestrel::SequentialLlr>;
+  // PCL-002's clutter density and a rare new target: the prior odds of a
+  // lone plot, ln(beta_NT / beta_FA) = -4.2, lie below T_d = -3.0.
+  const kestrel::SequentialLlrParams& llr = kParams.score;
+  const double td = std::log(llr.missed_track_probability / (1 - llr.false_track_probability));
+  REQUIRE(std::log(llr.new_target_density / llr.clutter_density) < td);
+  GIVEN("the target detected in every frame") {
+    auto tracker = kestrel::make_pcl_tracker<double, kTracks, kCandidates, kestrel::NearestNeighbour,
+                                             kestrel::SequentialLlr>(kParams);
+    int confirmed_at = -1;
+    for (int k = 0; k < 8 && confirmed_at < 0; ++k) {
+      ScoredT::Scan s = scan_at(k);
+      add(s, target_at(k));
+      REQUIRE(tracker.step(s) == Status::kOk);
+      if (!tracker.reports().empty()) confirmed_at = k;
+    }
+    THEN("the track is confirmed within a few frames") {
+      CHECK(confirmed_at >= 1);
+      CHECK(confirmed_at <= 4);
+    }
+  }
+  GIVEN("one plot, then nothing") {
+    auto tracker = kestrel::make_pcl_tracker<double, kTracks, kCandidates, kestrel::NearestNeighbour,
+                                             kestrel::SequentialLlr>(kParams);
+    ScoredT::Scan s = scan_at(0);
+    add(s, target_at(0));
+    REQUIRE(tracker.step(s) == Status::kOk);
+    REQUIRE(tracker.tracks().size() == 1);
+    // Each miss of a tentative track adds ln(1 - P_D P_G), P_G of the
+    // tentative gate (0.95).
+    const double per_miss = -std::log(1 - llr.detection_probability * 0.95);
+    const int expected = static_cast<int>(std::ceil(-td / per_miss));
+    int deleted_after = 0;
+    for (int miss = 1; miss <= 10 && deleted_after == 0; ++miss) {
+      REQUIRE(tracker.step(scan_at(miss)) == Status::kOk);
+      if (tracker.tracks().size() == 0) deleted_after = miss;
+    }
+    THEN("it lives until the misses take it T_d below its peak") { CHECK(deleted_after == expected); }
+  }
+}

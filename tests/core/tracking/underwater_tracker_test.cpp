@@ -1,7 +1,8 @@
 // Underwater tracker step() (SPEC section 9, UW-003): initialisation by
 // multilateration, convergence to the truth with c fixed and no noise, the
 // per-channel gate dropping an injected outlier while keeping the good
-// arrivals, predict-only and re-acquisition, bad-frame statuses that leave
+// arrivals, predict-only and re-acquisition (after empty frames, and after
+// frames that fused at most half their arrivals), bad-frame statuses that leave
 // the tracker untouched, zero allocations per step; the HAL sonar adapter.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -189,6 +190,45 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
           CHECK_FALSE(tr.last_step().predict_only);
           CHECK((tr.filter().x().head<3>() - (truth_at(12) + jump)).norm() < 0.05);
         }
+      }
+    }
+    WHEN("for three frames five arrivals show the target 150 m further east and three show it where it was") {
+      // Beacons 0 and 1 (both paths) and beacon 2's direct path moved; the
+      // track still fuses the other three, so no frame is empty.
+      const Eigen::Vector3d jump(150, 0, 0);
+      auto mixed = [&](int k) {
+        Scan moved = frame_at(k, 1500, nullptr, 0, jump);
+        Scan s = frame_at(k);
+        for (std::size_t i = 0; i < 5; ++i) s.arrivals[i] = moved.arrivals[i];
+        return s;
+      };
+      REQUIRE(tr.step(mixed(10)) == Status::kOk);
+      CHECK(tr.last_step().fused <= 4);
+      CHECK_FALSE(tr.last_step().predict_only);
+      REQUIRE(tr.step(mixed(11)) == Status::kOk);
+      CHECK_FALSE(tr.last_step().initialised);
+      REQUIRE(tr.step(mixed(12)) == Status::kOk);
+      THEN("the third frame that fused at most half its arrivals re-acquires on the five that agree") {
+        CHECK(tr.last_step().initialised);
+        CHECK(tr.counters().initialisations == 2);
+        CHECK(tr.last_step().fused == 5);
+        CHECK((tr.filter().x().head<3>() - (truth_at(12) + jump)).norm() < 0.05);
+      }
+    }
+    WHEN("for three frames four arrivals are late by different amounts (no fix explains them)") {
+      auto garbled = [&](int k) {
+        Scan s = frame_at(k);
+        for (std::size_t i = 0; i < 4; ++i) s.arrivals[2 * i + 1].toa_s += 40e-3 * static_cast<double>(i + 1);
+        return s;
+      };
+      for (int k = 10; k < 13; ++k) REQUIRE(tr.step(garbled(k)) == Status::kOk);
+      THEN("the fix is tried but not taken: it explains no more than the track fused") {
+        CHECK(tr.last_step().fused == 4);
+        CHECK_FALSE(tr.last_step().initialised);
+        CHECK(tr.counters().initialisations == 1);
+        // Still on the target; three frames of direct paths only hold depth
+        // less tightly than full frames (0.44 m here).
+        CHECK((tr.filter().x().head<3>() - truth_at(12)).norm() < 1.0);
       }
     }
   }

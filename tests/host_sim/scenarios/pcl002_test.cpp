@@ -236,3 +236,26 @@ SCENARIO("the PCL tracker meets issue 5's goals on pcl002 through the board loop
     }
   }
 }
+
+SCENARIO("on pcl002-hard, PDA with the track score holds the drone and confirms almost no clutter",
+         "[host_sim][end_to_end][pcl][policies]") {
+  const PclScenarioConfig sc = pcl002_hard_config();
+  PclMonteCarloConfig c;
+  c.runs = 40;
+  c.base_seed = 100;
+  c.jobs = 2;
+  c.policies = {AssociatorChoice::kPda, ManagerChoice::kScore};
+  const PclSummary s = summarise_pcl(run_pcl_monte_carlo(sc, pcl_params_for(sc), c).runs, c.budget_ns);
+  c.policies = {};
+  const PclSummary nn = summarise_pcl(run_pcl_monte_carlo(sc, pcl_params_for(sc), c).runs, c.budget_ns);
+  THEN("association and coverage of at least 0.95 and at most 0.1 false confirmed tracks per run") {
+    CHECK(s.association_accuracy.mean >= 0.95);
+    CHECK(s.coverage.mean >= 0.95);
+    CHECK(s.false_tracks.mean <= 0.1);
+    CHECK(s.runs_never_confirmed == 0);
+  }
+  THEN("where nearest neighbour with 5-of-6 falls short of both") {
+    CHECK(nn.association_accuracy.mean < 0.95);
+    CHECK(nn.false_tracks.mean > 0.5);
+  }
+}

@@ -18,6 +18,10 @@ namespace kestrel {
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxMeasurements>
 class GlobalNearestNeighbour {
  public:
+  struct Params {};  ///< None.
+  GlobalNearestNeighbour() = default;
+  explicit GlobalNearestNeighbour(const Params&) {}
+
   /// @param c the tracker's candidate pairs (see NearestNeighbour).
   template <class Candidates>
   void associate(Candidates& c) {

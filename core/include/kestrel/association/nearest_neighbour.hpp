@@ -11,6 +11,10 @@ namespace kestrel {
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxMeasurements>
 class NearestNeighbour {
  public:
+  struct Params {};  ///< None.
+  NearestNeighbour() = default;
+  explicit NearestNeighbour(const Params&) {}
+
   /// @param c the tracker's candidate pairs (tracking/tracker.hpp,
   ///          AssociationCandidates): tracks(), measurements(), free(j),
   ///          innovation(k, j), gated(in), assign(k, j, in).

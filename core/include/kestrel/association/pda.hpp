@@ -34,6 +34,7 @@ class ProbabilisticDataAssociation {
   static_assert(!T::kIsFixedPoint, "the association weights need exp and log: float or double");
 
  public:
+  using Params = PdaParams;
   ProbabilisticDataAssociation() : ProbabilisticDataAssociation(PdaParams{}) {}
   explicit ProbabilisticDataAssociation(const PdaParams& p) : params_(p) {}
   const PdaParams& params() const { return params_; }

@@ -2,9 +2,12 @@
 // (PCL-002): a linear Kalman filter on the bistatic CV-1D model [Rb, dRb]
 // with the bistatic range / range-rate measurement (H = I), single-point
 // initiation with the zero-Doppler start veto, an ellipsoidal gate per track
-// (a tighter one for tentative tracks), nearest-neighbour association (one
-// candidate per track, confirmed tracks first), 5-of-6 confirmation and
-// deletion after a bounded coast or a bistatic-range variance limit.
+// (a tighter one for tentative tracks), and by default nearest-neighbour
+// association (one candidate per track, confirmed tracks first), 5-of-6
+// confirmation and deletion after a bounded coast or a bistatic-range
+// variance limit. The associator and the track manager are the tracker's
+// policies: GNN, PDA and the sequential track score compose the same way,
+// their parameters carried here.
 //
 // The filter is Ekf on linear models, which is exactly the linear KF (the
 // Jacobians are the constant F and H, so the EKF equations reduce to the KF
@@ -15,10 +18,13 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
+#include "kestrel/association/pda.hpp"
 #include "kestrel/filters/ekf.hpp"
 #include "kestrel/models/measurement/bistatic_range_rate.hpp"
 #include "kestrel/models/motion/bistatic_cv_1d.hpp"
+#include "kestrel/tracking/sequential_llr.hpp"
 #include "kestrel/tracking/single_point_initiator.hpp"
 #include "kestrel/tracking/tracker.hpp"
 
@@ -41,6 +47,11 @@ struct PclTrackerParams {
   double max_rb_variance_m2 = 2500.0;     ///< Delete a track whose var(Rb) exceeds this (50 m sigma), m^2.
   double max_bistatic_range_m = 200000.0; ///< Candidates beyond are out of range (frame refused).
   double max_abs_doppler_hz = 5000.0;     ///< |fD| beyond is out of range (frame refused), Hz.
+  // Read only by the policies that use them. Densities are per m x m/s
+  // (Rb x dRb) and frame; PCL-002's 21 false candidates a frame spread over
+  // 3000 m x 250 Hz (106.9 m/s) are 6.5e-5.
+  PdaParams pda{0.9, 0.0};                ///< ProbabilisticDataAssociation: P_D; clutter from the gate.
+  SequentialLlrParams score{0.9, 6.5e-5, 1.0e-6, 1.0e-4, 0.05};  ///< SequentialLlr.
 };
 
 template <class Scalar>
@@ -59,10 +70,12 @@ using PclInitiator = SinglePointInitiator<PclMotion<Scalar>, PclMeasurement<Scal
 inline constexpr std::size_t kPclMaxCandidates = 32;
 inline constexpr std::size_t kPclMaxTracks = 128;
 
-template <class Filter, std::size_t kMaxTracks, std::size_t kMaxCandidates>
+template <class Filter, std::size_t kMaxTracks, std::size_t kMaxCandidates,
+          template <class, std::size_t, std::size_t> class Associator = NearestNeighbour,
+          template <class> class Manager = MOfN>
 using PclTracker =
     Tracker<Filter, SinglePointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
-            kMaxTracks, kMaxCandidates>;
+            kMaxTracks, kMaxCandidates, Associator, Manager>;
 
 /// Carrier wavelength of the parameters, m.
 template <class Scalar>
@@ -117,11 +130,21 @@ PclKf<Scalar> pcl_filter(const PclTrackerParams& p) {
   return PclKf<Scalar>(motion, pcl_measurement<Scalar>(p));
 }
 
-/// The PCL tracker with the given parameters.
-template <class Scalar, std::size_t kMaxTracks = kPclMaxTracks, std::size_t kMaxCandidates = kPclMaxCandidates>
-PclTracker<PclKf<Scalar>, kMaxTracks, kMaxCandidates> make_pcl_tracker(const PclTrackerParams& p) {
-  return PclTracker<PclKf<Scalar>, kMaxTracks, kMaxCandidates>(pcl_filter<Scalar>(p), pcl_initiator<Scalar>(p),
-                                                               pcl_tracker_config<Scalar>(p));
+/// The PCL tracker with the given parameters and policies.
+template <class Scalar, std::size_t kMaxTracks = kPclMaxTracks, std::size_t kMaxCandidates = kPclMaxCandidates,
+          template <class, std::size_t, std::size_t> class Associator = NearestNeighbour,
+          template <class> class Manager = MOfN>
+PclTracker<PclKf<Scalar>, kMaxTracks, kMaxCandidates, Associator, Manager> make_pcl_tracker(
+    const PclTrackerParams& p) {
+  using Composed = PclTracker<PclKf<Scalar>, kMaxTracks, kMaxCandidates, Associator, Manager>;
+  using ManagerT = typename Composed::ManagerT;
+  using AssociatorParams = typename Composed::AssociatorParams;
+  ManagerT manager{};
+  if constexpr (std::is_constructible_v<ManagerT, const SequentialLlrParams&>) manager = ManagerT(p.score);
+  AssociatorParams associator{};
+  if constexpr (std::is_same_v<AssociatorParams, PdaParams>) associator = p.pda;
+  return Composed(pcl_filter<Scalar>(p), pcl_initiator<Scalar>(p), pcl_tracker_config<Scalar>(p), manager,
+                  associator);
 }
 
 }  // namespace kestrel

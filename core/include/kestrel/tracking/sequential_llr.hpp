@@ -11,9 +11,15 @@
 // probabilities of confirming a false track (alpha) and of dropping a true
 // one (beta):
 //   confirm a tentative track when L >= T_c = ln((1 - beta) / alpha),
-//   delete a tentative track when  L <= T_d = ln(beta / (1 - alpha)),
-//   delete a confirmed track when its score has fallen T_c - T_d below the
-//   highest it reached (a run of misses, or plots that fit badly).
+//   delete a tentative track when L has fallen T_d = ln(beta / (1 - alpha))
+//   below the highest it reached,
+//   delete a confirmed track when it has fallen T_c - T_d below that peak
+//   (a run of misses, or plots that fit badly).
+// The tentative test is on the evidence the plots brought, not on the prior
+// odds ln(beta_NT / beta_FA) it starts from: with a realistic (small) new-target
+// density that start lies below T_d, and an absolute test would delete
+// every track at its first frame. Confirmation does include the prior, so
+// rare new targets need more evidence.
 // Unlike M-of-N it weighs how well each plot fits and how dense the clutter
 // is, so one threshold pair holds from a clean scene to a dense one.
 // Floating-point scalars only (a log per hit).
@@ -102,7 +108,7 @@ class SequentialLlr {
     if (!hit) tr.score += confirmed ? miss_confirmed_ : miss_tentative_;
     if (!confirmed) {
       if (tr.score >= confirm_) return TrackVerdict::kConfirm;
-      return tr.score <= delete_ ? TrackVerdict::kDelete : TrackVerdict::kKeep;
+      return tr.score - tr.score_peak <= delete_ ? TrackVerdict::kDelete : TrackVerdict::kKeep;
     }
     return tr.score_peak - tr.score >= confirm_ - delete_ ? TrackVerdict::kDelete : TrackVerdict::kKeep;
   }

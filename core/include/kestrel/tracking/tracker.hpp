@@ -144,15 +144,19 @@ class Tracker {
   using Table = TrackTable<TrackT, kMaxTracks>;
   using Config = TrackerConfig<Scalar, kMeasDim>;
   using AssociatorT = Associator<Scalar, kMaxTracks, kMaxMeasurements>;
+  using AssociatorParams = typename AssociatorT::Params;
   using ManagerT = Manager<Scalar>;
   static_assert(kMaxMeasurements < 32768, "measurement indices are int16");
 
-  /// @param prototype a filter holding the model parameters every track copies.
-  /// @param manager   the track manager with its own parameters (MOfN reads
-  ///                  its own from config).
+  /// @param prototype  a filter holding the model parameters every track copies.
+  /// @param manager    the track manager with its own parameters (MOfN reads
+  ///                   its own from config).
+  /// @param associator the associator's parameters (PDA's P_D and clutter
+  ///                   density; NN and GNN have none). Its scratch storage
+  ///                   (GNN's cost matrix) is built in place, never copied.
   Tracker(const Filter& prototype, const Initiator& initiator, const Config& config,
-          const ManagerT& manager = ManagerT{})
-      : initiator_(initiator), config_(config), manager_(manager) {
+          const ManagerT& manager = ManagerT{}, const AssociatorParams& associator = AssociatorParams{})
+      : initiator_(initiator), config_(config), manager_(manager), associator_(associator) {
     prototype_.filter = prototype;
     gate_confirmed_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_confirmed);
     gate_tentative_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_tentative);
@@ -640,7 +644,7 @@ class Tracker {
   Initiator initiator_;
   Config config_;
   ManagerT manager_;
-  AssociatorT associator_{};
+  AssociatorT associator_;
   TrackT prototype_{};
   EllipsoidalGate<Scalar, kMeasDim> gate_confirmed_{};
   EllipsoidalGate<Scalar, kMeasDim> gate_tentative_{};

@@ -47,8 +47,12 @@ struct UnderwaterTrackerConfig {
   Scalar initial_sound_speed_sigma_mps = lit<Scalar>(1.0); ///< Initial c sigma, m/s.
   Scalar max_toa_s = lit<Scalar>(10.0);            ///< Arrival times outside (0, max_toa_s] are out of range, s.
   /// Re-run the multilateration after this many frames in a row that carried
-  /// at least init.min_arrivals arrivals but fused none (0: never).
-  std::uint16_t reacquire_after_empty_frames = 3;
+  /// at least init.min_arrivals arrivals but fused at most half of them
+  /// (0: never). A track that is on the target gates out an arrival with
+  /// probability about 0.05 at k = 2 (more with outliers), so half a frame
+  /// gated out, frame after frame, means the gate has locked onto a wrong
+  /// estimate and is throwing the data away.
+  std::uint16_t reacquire_after_lost_frames = 3;
   /// A frame more than this after the last one restarts the track from a
   /// fresh fix instead of predicting across the gap, us. Default 60 s.
   std::int64_t max_predict_us = 60'000'000;
@@ -160,12 +164,12 @@ class UnderwaterTracker {
     stats_.present = present;
 
     Filter next = filter_;
-    std::uint16_t empty_frames = empty_frames_;
+    std::uint16_t lost_frames = lost_frames_;
     const std::int64_t gap_us = initialised_ && !resync ? elapsed_us(scan.t_us, t_us_) : 0;
     if (!initialised_ || resync || gap_us > config_.max_predict_us) {
       const Status s = initialise(next, z, present);
       if (s != Status::kOk) return refuse(s);
-      empty_frames = 0;
+      lost_frames = 0;
     } else {
       const Scalar dt = ScalarTraits<Scalar>::from_ratio(gap_us, 1000000);
       Status s = next.predict(dt);
@@ -177,16 +181,21 @@ class UnderwaterTracker {
       stats_.fused = static_cast<std::uint8_t>(channel_count(d.fused));
       stats_.gated_out = static_cast<std::uint8_t>(channel_count(stats_.gated_mask));
       stats_.predict_only = d.fused == 0;
-      empty_frames = 0;
-      if (stats_.predict_only && channel_count(present) >= static_cast<int>(config_.init.min_arrivals)) {
-        empty_frames = static_cast<std::uint16_t>(empty_frames_ + 1);
-        // Lost: everything a full frame said was outside the gate, several
-        // frames running. Start again from this frame if it gives a fix.
-        if (config_.reacquire_after_empty_frames > 0 && empty_frames >= config_.reacquire_after_empty_frames) {
+      lost_frames = 0;
+      const int arrivals = channel_count(present);
+      if (arrivals >= static_cast<int>(config_.init.min_arrivals) && 2 * static_cast<int>(stats_.fused) <= arrivals) {
+        lost_frames = static_cast<std::uint16_t>(lost_frames_ < UINT16_MAX ? lost_frames_ + 1 : lost_frames_);
+        // Lost: most of what full frames said was outside the gate, several
+        // frames running. Start again from this frame if its fix explains
+        // more arrivals than the track fused.
+        if (config_.reacquire_after_lost_frames > 0 && lost_frames >= config_.reacquire_after_lost_frames) {
           Filter fresh = next;
-          if (initialise(fresh, z, present) == Status::kOk) {
+          const UnderwaterStepStats tracked = stats_;
+          if (initialise(fresh, z, present) == Status::kOk && stats_.fused > tracked.fused) {
             next = fresh;
-            empty_frames = 0;
+            lost_frames = 0;
+          } else {
+            stats_ = tracked;
           }
         }
       }
@@ -194,7 +203,7 @@ class UnderwaterTracker {
 
     filter_ = next;
     initialised_ = true;
-    empty_frames_ = empty_frames;
+    lost_frames_ = lost_frames;
     t_us_ = scan.t_us;
     have_time_ = true;
     off_clock_count_ = 0;
@@ -323,7 +332,7 @@ class UnderwaterTracker {
   Report reports_[1]{};
   std::size_t report_count_ = 0;
   std::int64_t t_us_ = 0;
-  std::uint16_t empty_frames_ = 0;
+  std::uint16_t lost_frames_ = 0;  ///< Consecutive lost frames (reacquire_after_lost_frames).
   std::int64_t off_clock_t_us_ = 0;   ///< Time of the last frame refused for its time.
   std::uint8_t off_clock_count_ = 0;  ///< Consecutive consistent ones (resync rule).
   bool have_time_ = false;
@@ -351,7 +360,7 @@ struct UnderwaterTrackerParams {
   GateProbability ellipsoid_probability = GateProbability::k99;  ///< Its probability.
   double reject_sigma = 3.0;                  ///< Multilateration rejection threshold, sigma.
   double max_toa_s = 10.0;                    ///< Largest plausible arrival time, s.
-  std::uint16_t reacquire_after_empty_frames = 3;  ///< 0: never re-run the fix.
+  std::uint16_t reacquire_after_lost_frames = 3;  ///< Frames fusing at most half their arrivals; 0: never re-run the fix.
   std::int64_t max_predict_us = 60'000'000;        ///< Longer gaps restart from a fresh fix, us.
   std::int64_t max_forward_jump_us = 600'000'000;  ///< Later frames are refused (kTimeJumpedForward), us.
   std::uint8_t resync_frames = 3;                  ///< Consistent refused frames that move the clock (0: never).
@@ -383,7 +392,7 @@ UnderwaterTrackerConfig<Scalar, kMaxBeacons> underwater_tracker_config(const Und
   c.initial_velocity_sigma_mps = T::from_double(p.initial_velocity_sigma_mps);
   c.initial_sound_speed_sigma_mps = T::from_double(p.initial_sound_speed_sigma_mps);
   c.max_toa_s = T::from_double(p.max_toa_s);
-  c.reacquire_after_empty_frames = p.reacquire_after_empty_frames;
+  c.reacquire_after_lost_frames = p.reacquire_after_lost_frames;
   c.max_predict_us = p.max_predict_us;
   c.max_forward_jump_us = p.max_forward_jump_us;
   c.resync_frames = p.resync_frames;
