@@ -118,7 +118,7 @@ class SrUkf {
       Cov S = triangularise(A);
       const Status up = cholesky_rank1_update<Scalar, kStateDim>(S, Y.col(0) - x, w_.wc0);
       if (up != Status::kOk) return up;
-      if (!all_finite(x)) return Status::kNonFinite;
+      if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
       commit(x, S);
       return Status::kOk;
     }
@@ -197,7 +197,7 @@ class SrUkf {
   Status predict_affine(Scalar dt, const Cov& Sq) {
     const State x = motion_.propagate(x_, dt);
     const Cov S = sigma::affine_sqrt_time_update(motion_, Sx_, Sq, dt);
-    if (!all_finite(x)) return Status::kNonFinite;
+    if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
     commit(x, S);
     return Status::kOk;
   }
