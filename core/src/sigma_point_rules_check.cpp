@@ -4,11 +4,9 @@
 // -Werror), on both motion models with the polar radar. Nothing links
 // against it: a heap use, an exception, RTTI or a conversion warning in any
 // of these templates fails this object.
-#include "kestrel/filters/cdkf.hpp"
 #include "kestrel/filters/crpf.hpp"
-#include "kestrel/filters/sr_cdkf.hpp"
-#include "kestrel/filters/sr_ukf.hpp"
-#include "kestrel/filters/ukf.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
+#include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/math/cholesky_update.hpp"
 #include "kestrel/math/prng.hpp"
 #include "kestrel/math/triangular.hpp"
@@ -27,15 +25,16 @@ using CaRadar = PolarRadar<ConstantAcceleration2D<S>>;
 // Every filter in both scalars and on both motion models, each pairing
 // once (CV-2D with one scalar, CA-2D with the other): the filters' code does
 // not depend on the pairing, and each instantiation costs ten to twenty
-// seconds of compile time.
-template class Ukf<ConstantVelocity2D<double>, CvRadar<double>>;
-template class Ukf<ConstantAcceleration2D<float>, CaRadar<float>>;
-template class Cdkf<ConstantVelocity2D<float>, CvRadar<float>>;
-template class Cdkf<ConstantAcceleration2D<double>, CaRadar<double>>;
-template class SrUkf<ConstantVelocity2D<double>, CvRadar<double>>;
-template class SrUkf<ConstantAcceleration2D<float>, CaRadar<float>>;
-template class SrCdkf<ConstantVelocity2D<float>, CvRadar<float>>;
-template class SrCdkf<ConstantAcceleration2D<double>, CaRadar<double>>;
+// seconds of compile time. Explicit instantiation names the class template,
+// not its alias (Ukf = SigmaPointFilter<..., UnscentedPoints>).
+template class SigmaPointFilter<ConstantVelocity2D<double>, CvRadar<double>, UnscentedPoints>;
+template class SigmaPointFilter<ConstantAcceleration2D<float>, CaRadar<float>, UnscentedPoints>;
+template class SigmaPointFilter<ConstantVelocity2D<float>, CvRadar<float>, CentralDifferencePoints>;
+template class SigmaPointFilter<ConstantAcceleration2D<double>, CaRadar<double>, CentralDifferencePoints>;
+template class SrSigmaPointFilter<ConstantVelocity2D<double>, CvRadar<double>, UnscentedPoints>;
+template class SrSigmaPointFilter<ConstantAcceleration2D<float>, CaRadar<float>, UnscentedPoints>;
+template class SrSigmaPointFilter<ConstantVelocity2D<float>, CvRadar<float>, CentralDifferencePoints>;
+template class SrSigmaPointFilter<ConstantAcceleration2D<double>, CaRadar<double>, CentralDifferencePoints>;
 template class Crpf<ConstantVelocity2D<double>, CvRadar<double>, 100>;
 template class Crpf<ConstantAcceleration2D<float>, CaRadar<float>, 16>;
 static_assert(TrackingFilter<Ukf<ConstantVelocity2D<double>, CvRadar<double>>>);

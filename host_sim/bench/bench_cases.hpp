@@ -23,13 +23,11 @@
 #include <vector>
 
 #include "bench/bench_inputs.hpp"
-#include "kestrel/filters/cdkf.hpp"
 #include "kestrel/filters/ekf.hpp"
 #include "kestrel/filters/r2aekf.hpp"
-#include "kestrel/filters/sr_cdkf.hpp"
-#include "kestrel/filters/sr_ukf.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
+#include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/filters/structure.hpp"
-#include "kestrel/filters/ukf.hpp"
 #include "kestrel/scalar/fixed_point_eigen.hpp"
 #include "kestrel/host/board.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"

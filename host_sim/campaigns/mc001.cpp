@@ -14,12 +14,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "kestrel/filters/cdkf.hpp"
 #include "kestrel/filters/crpf.hpp"
 #include "kestrel/filters/ekf.hpp"
-#include "kestrel/filters/sr_cdkf.hpp"
-#include "kestrel/filters/sr_ukf.hpp"
-#include "kestrel/filters/ukf.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
+#include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/math/prng.hpp"
 #include "kestrel/models/measurement/polar_radar.hpp"
 #include "kestrel/models/motion/constant_velocity_2d.hpp"

@@ -5,8 +5,8 @@
 
 #include "core/filters/filter_checks.hpp"
 #include "core/filters/sr_check.hpp"
-#include "kestrel/filters/sr_cdkf.hpp"
-#include "kestrel/filters/cdkf.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
+#include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/tracking/tracker.hpp"
 
 using kestrel::ConstantVelocity2D;

@@ -20,11 +20,9 @@
 #include <vector>
 
 #include "core/filters/sigma_test_support.hpp"
-#include "kestrel/filters/cdkf.hpp"
-#include "kestrel/filters/sr_cdkf.hpp"
-#include "kestrel/filters/sr_ukf.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
+#include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/filters/structure.hpp"
-#include "kestrel/filters/ukf.hpp"
 #include "kestrel/math/prng.hpp"
 #include "kestrel/models/measurement/polar_radar.hpp"
 #include "kestrel/models/motion/constant_acceleration_2d.hpp"

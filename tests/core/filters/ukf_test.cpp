@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 
 #include "core/filters/filter_checks.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
 #include "kestrel/filters/sigma_points.hpp"
-#include "kestrel/filters/ukf.hpp"
 #include "kestrel/models/motion/constant_acceleration_2d.hpp"
 #include "kestrel/tracking/tracker.hpp"
 

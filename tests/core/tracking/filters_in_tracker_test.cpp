@@ -8,11 +8,9 @@
 #include <cstdint>
 
 #include "core/scalar/s1_integer_scenario.hpp"
-#include "kestrel/filters/cdkf.hpp"
 #include "kestrel/filters/crpf.hpp"
-#include "kestrel/filters/sr_cdkf.hpp"
-#include "kestrel/filters/sr_ukf.hpp"
-#include "kestrel/filters/ukf.hpp"
+#include "kestrel/filters/sigma_point_filter.hpp"
+#include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 
 namespace {

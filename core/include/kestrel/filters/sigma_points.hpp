@@ -1,8 +1,14 @@
-// Sigma points, their weights and their statistics, shared by the UKF, CDKF,
-// SR-UKF and SR-CDKF (SPEC section 5; paper 001 section 3.2-3.3 and tables
-// 2-5, which follow van der Merwe 2004, "Sigma-point Kalman filters for
-// probabilistic inference in dynamic state-space models", PhD thesis, OGI,
-// sections 3.2-3.4 and algorithms 8-11).
+// Sigma points, their weights and their statistics: the point sets that the
+// sigma-point filters (filters/sigma_point_filter.hpp, plain;
+// filters/sr_sigma_point_filter.hpp, square root) take as a template
+// parameter (SPEC section 5; paper 001 section 3.2-3.3 and tables 2-5, which
+// follow van der Merwe 2004, "Sigma-point Kalman filters for probabilistic
+// inference in dynamic state-space models", PhD thesis, OGI, sections
+// 3.2-3.4 and algorithms 8-11). A point set owns its weights and how the
+// transform's covariance and cross-covariance are formed from the points,
+// in the plain and the square-root form; the filters own drawing,
+// propagating, means, gains, status and commit-on-success. A new point set
+// is one more struct here with the members UnscentedPoints has.
 //
 // One symmetric set of 2n + 1 points for both families (compile-time count):
 //   X_0 = x,  X_i = x + c L_i,  X_(n+i) = x - c L_i  (i = 1..n),
@@ -25,7 +31,7 @@
 // States are assumed to hold no angle (true of CA-2D, CV-2D, CV-3D, CT-2D):
 // their deviations are plain differences.
 //
-// Affine motion (issue 9). A BlockDiagonalMotion model (filters/structure.hpp)
+// Affine motion. A BlockDiagonalMotion model (filters/structure.hpp)
 // has the Jacobian blkdiag(F1(dt), ...), independent of x, so its f is
 // affine: f(x) = F x + c. The time update of every filter here then has a
 // closed form, equal to the sigma-point one in exact arithmetic:
@@ -54,8 +60,12 @@
 
 #include "kestrel/assert.hpp"
 #include "kestrel/filters/structure.hpp"
+#include "kestrel/math/cholesky_update.hpp"
 #include "kestrel/math/eigen.hpp"
+#include "kestrel/math/finite.hpp"
+#include "kestrel/math/triangular.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
+#include "kestrel/status.hpp"
 
 namespace kestrel {
 
@@ -73,68 +83,12 @@ struct UnscentedParams {
   S kappa = S(3 - kN);  ///< Secondary scaling; 3 - n matches the 4th moment of a Gaussian.
 };
 
-/// Weights of the scaled unscented transform:
-/// lambda = alpha^2 (n + kappa) - n, spread = sqrt(n + lambda),
-/// Wm_0 = lambda / (n + lambda), Wc_0 = Wm_0 + 1 - alpha^2 + beta,
-/// W_i = 1 / (2 (n + lambda)) for i >= 1 (mean and covariance alike).
-template <class S, int kN>
-struct UnscentedWeights {
-  S spread{};   ///< sqrt(n + lambda).
-  S wm0{};      ///< Mean weight of X_0 (negative for n > 3 with the defaults).
-  S wc0{};      ///< Covariance weight of X_0.
-  S wi{};       ///< Weight of X_1 .. X_2n (positive).
-  S sqrt_wi{};  ///< sqrt(W_i), the column scale of the SR-UKF compound matrix.
-
-  static UnscentedWeights from(const UnscentedParams<S, kN>& p) {
-    using T = ScalarTraits<S>;
-    const S n = S(kN);
-    const S n_lambda = p.alpha * p.alpha * (n + p.kappa);  // n + lambda
-    KESTREL_ASSERT(n_lambda > S(0));  // programmer error: alpha^2 (n + kappa) must be > 0
-    UnscentedWeights w;
-    w.spread = T::sqrt(n_lambda);
-    w.wm0 = (n_lambda - n) / n_lambda;
-    w.wc0 = w.wm0 + S(1) - p.alpha * p.alpha + p.beta;
-    w.wi = S(1) / (S(2) * n_lambda);
-    w.sqrt_wi = T::sqrt(w.wi);
-    return w;
-  }
-};
-
 /// Central difference (Stirling interpolation) parameter (Norgaard, Poulsen,
 /// Ravn 2000; van der Merwe 2004 section 3.4.1): h^2 = 3 is optimal for a
 /// Gaussian prior (it matches the fourth moment). SPEC 5: h = sqrt(3).
 template <class S>
 struct CentralDifferenceParams {
   S h = lit<S>(1.7320508075688772935);  ///< Half-width of the central difference, h >= 1.
-};
-
-/// Weights of the CDKF (van der Merwe 2004 eq. 3.85-3.88):
-/// Wm_0 = (h^2 - n) / h^2, Wm_i = 1 / (2 h^2),
-/// Wc1 = 1 / (4 h^2), Wc2 = (h^2 - 1) / (4 h^4).
-template <class S, int kN>
-struct CentralDifferenceWeights {
-  S spread{};    ///< h.
-  S wm0{};       ///< Mean weight of X_0.
-  S wi{};        ///< Mean weight of X_1 .. X_2n.
-  S wc1{};       ///< Weight of the first-order terms (X_i - X_(n+i)).
-  S wc2{};       ///< Weight of the second-order terms (X_i + X_(n+i) - 2 X_0).
-  S sqrt_wc1{};  ///< sqrt(Wc1) = 1 / (2h).
-  S sqrt_wc2{};  ///< sqrt(Wc2) = sqrt(h^2 - 1) / (2 h^2).
-
-  static CentralDifferenceWeights from(const CentralDifferenceParams<S>& p) {
-    using T = ScalarTraits<S>;
-    KESTREL_ASSERT(p.h >= S(1));  // programmer error: Wc2 must be >= 0
-    const S h2 = p.h * p.h;
-    CentralDifferenceWeights w;
-    w.spread = p.h;
-    w.wm0 = (h2 - S(kN)) / h2;
-    w.wi = S(1) / (S(2) * h2);
-    w.wc1 = S(1) / (S(4) * h2);
-    w.wc2 = (h2 - S(1)) / (S(4) * h2 * h2);
-    w.sqrt_wc1 = T::sqrt(w.wc1);
-    w.sqrt_wc2 = T::sqrt(w.wc2);
-    return w;
-  }
 };
 
 namespace sigma {
@@ -334,4 +288,213 @@ Mat<S, kN, kM> gain(const Eigen::LLT<Mat<S, kM, kM>>& llt_S, const Mat<S, kN, kM
 }
 
 }  // namespace sigma
+
+/// The scaled unscented transform (Julier 2002; van der Merwe 2004 eq.
+/// 3.11-3.12; the UKF, algorithm 8 / paper 001 table 2, and the SR-UKF,
+/// algorithm 10 / table 4): its weights,
+///   lambda = alpha^2 (n + kappa) - n, spread c = sqrt(n + lambda),
+///   Wm_0 = lambda / (n + lambda), Wc_0 = Wm_0 + 1 - alpha^2 + beta,
+///   W_i = 1 / (2 (n + lambda)) for i >= 1 (mean and covariance alike),
+/// and its statistics: weighted outer products of the deviations from the
+/// mean. Wc_0 may be negative (n > 3 with the SPEC defaults), so the square
+/// root form leaves X_0 out of the QR and adds it by a rank-1 update.
+template <class Scalar, int kN>
+struct UnscentedPoints {
+  using Params = UnscentedParams<Scalar, kN>;
+  static constexpr int kCount = kSigmaPointCount<kN>;
+  using State = Vec<Scalar, kN>;
+  using Cov = Mat<Scalar, kN, kN>;
+  using Points = sigma::Points<Scalar, kN>;
+
+  Scalar spread{};   ///< sqrt(n + lambda).
+  Scalar wm0{};      ///< Mean weight of X_0 (negative for n > 3 with the defaults).
+  Scalar wc0{};      ///< Covariance weight of X_0.
+  Scalar wi{};       ///< Weight of X_1 .. X_2n (positive).
+  Scalar sqrt_wi{};  ///< sqrt(W_i), the column scale of the SR-UKF compound matrix.
+
+  static UnscentedPoints from(const Params& p) {
+    using T = ScalarTraits<Scalar>;
+    const Scalar n = Scalar(kN);
+    const Scalar n_lambda = p.alpha * p.alpha * (n + p.kappa);  // n + lambda
+    KESTREL_ASSERT(n_lambda > Scalar(0));  // programmer error: alpha^2 (n + kappa) must be > 0
+    UnscentedPoints w;
+    w.spread = T::sqrt(n_lambda);
+    w.wm0 = (n_lambda - n) / n_lambda;
+    w.wc0 = w.wm0 + Scalar(1) - p.alpha * p.alpha + p.beta;
+    w.wi = Scalar(1) / (Scalar(2) * n_lambda);
+    w.sqrt_wi = T::sqrt(w.wi);
+    return w;
+  }
+
+  /// Time update, algorithm 8: P- = sum Wc_i (Y_i - x-)(Y_i - x-)^T + Q,
+  /// symmetrised.
+  Cov covariance(const Points& Y, const State& x, const Cov& Q) const {
+    const State d0 = Y.col(0) - x;
+    Cov P = d0 * d0.transpose() * wc0;
+    for (int i = 1; i < kCount; ++i) {
+      const State d = Y.col(i) - x;
+      P += d * d.transpose() * wi;
+    }
+    return symmetrised(P + Q);
+  }
+
+  /// Measurement update, algorithm 8: S = sum Wc_i dZ_i dZ_i^T + R
+  /// (symmetrised) and Pxz = sum Wc_i (X_i - x) dZ_i^T, dZ_i =
+  /// residual(Z_i, z-), for X = draw(x, L, spread) and Z_i = h(X_i).
+  template <class Measurement, int kM>
+  void moments(const Measurement& h, const Points& X, const State& x, const Cov& /*L*/,
+               const Mat<Scalar, kM, kCount>& Z, const Vec<Scalar, kM>& z_mean, const Mat<Scalar, kM, kM>& R,
+               Mat<Scalar, kM, kM>& S, Mat<Scalar, kN, kM>& Pxz) const {
+    const auto dZ = sigma::measurement_deviations(h, Z, z_mean);
+    // X_0 - x = 0 exactly (the points are redrawn about x), so only
+    // X_1..X_2n contribute to Pxz.
+    Mat<Scalar, kM, kM> Szz = dZ.col(0) * dZ.col(0).transpose() * wc0;
+    Pxz.setZero();
+    for (int i = 1; i < kCount; ++i) {
+      Szz += dZ.col(i) * dZ.col(i).transpose() * wi;
+      Pxz += (X.col(i) - x) * dZ.col(i).transpose() * wi;
+    }
+    S = symmetrised(Szz + R);
+  }
+
+  /// Square-root time update, algorithm 10: Sx- = qr{[sqrt(W_i)(Y_(1..2n) -
+  /// x-), Sq]}, then cholupdate(Sx-, Y_0 - x-, Wc_0) (a downdate if Wc_0 < 0).
+  /// @return kOk; kNotPositiveDefinite or kNonFinite from the rank-1 update.
+  Status sqrt_covariance(const Points& Y, const State& x, const Cov& Sq, Cov& Sx) const {
+    Mat<Scalar, kN, 2 * kN + kN> A;
+    for (int i = 1; i < kCount; ++i) A.col(i - 1) = (Y.col(i) - x) * sqrt_wi;
+    A.template rightCols<kN>() = Sq;
+    Sx = triangularise(A);
+    return cholesky_rank1_update<Scalar, kN>(Sx, Y.col(0) - x, wc0);
+  }
+
+  /// Square-root measurement update, algorithm 10: Sy = qr{[sqrt(W_i)
+  /// dZ_(1..2n), Sr]}, Sy = cholupdate(Sy, dZ_0, Wc_0), and Pxz as in
+  /// moments(), for X = draw(x, Sx, spread).
+  /// @return kOk; kNotPositiveDefinite or kNonFinite from the rank-1 update.
+  template <class Measurement, int kM>
+  Status sqrt_moments(const Measurement& h, const Points& X, const State& x, const Cov& /*Sx*/,
+                      const Mat<Scalar, kM, kCount>& Z, const Vec<Scalar, kM>& z_mean,
+                      const Mat<Scalar, kM, kM>& Sr, Mat<Scalar, kM, kM>& Sy, Mat<Scalar, kN, kM>& Pxz) const {
+    const auto dZ = sigma::measurement_deviations(h, Z, z_mean);
+    Mat<Scalar, kM, 2 * kN + kM> A;
+    Pxz.setZero();
+    for (int i = 1; i < kCount; ++i) {
+      A.col(i - 1) = dZ.col(i) * sqrt_wi;
+      Pxz += (X.col(i) - x) * dZ.col(i).transpose() * wi;
+    }
+    A.template rightCols<kM>() = Sr;
+    Sy = triangularise(A);
+    return cholesky_rank1_update<Scalar, kM>(Sy, dZ.col(0), wc0);
+  }
+};
+
+/// Central difference (Stirling interpolation) in place of the Taylor
+/// series (Norgaard, Poulsen, Ravn 2000; Ito and Xiong 2000; van der Merwe
+/// 2004 section 3.4.1; the CDKF, algorithm 9 / paper 001 table 3, and the
+/// SR-CDKF, algorithm 11 / table 5). Weights (eq. 3.85-3.88):
+///   spread c = h, Wm_0 = (h^2 - n) / h^2, Wm_i = 1 / (2 h^2),
+///   Wc1 = 1 / (4 h^2), Wc2 = (h^2 - 1) / (4 h^4),
+/// and statistics from the first-order differences D1_i = Y_i - Y_(n+i)
+/// and the second-order ones D2_i = Y_i + Y_(n+i) - 2 Y_0 (eq. 3.90-3.91;
+/// measurement differences through residual()). Wc1 and Wc2 are never
+/// negative, so the square-root form needs no rank-1 update.
+template <class Scalar, int kN>
+struct CentralDifferencePoints {
+  using Params = CentralDifferenceParams<Scalar>;
+  static constexpr int kCount = kSigmaPointCount<kN>;
+  using State = Vec<Scalar, kN>;
+  using Cov = Mat<Scalar, kN, kN>;
+  using Points = sigma::Points<Scalar, kN>;
+
+  Scalar spread{};    ///< h.
+  Scalar wm0{};       ///< Mean weight of X_0.
+  Scalar wi{};        ///< Mean weight of X_1 .. X_2n.
+  Scalar wc1{};       ///< Weight of the first-order terms (X_i - X_(n+i)).
+  Scalar wc2{};       ///< Weight of the second-order terms (X_i + X_(n+i) - 2 X_0).
+  Scalar sqrt_wc1{};  ///< sqrt(Wc1) = 1 / (2h).
+  Scalar sqrt_wc2{};  ///< sqrt(Wc2) = sqrt(h^2 - 1) / (2 h^2).
+
+  static CentralDifferencePoints from(const Params& p) {
+    using T = ScalarTraits<Scalar>;
+    KESTREL_ASSERT(p.h >= Scalar(1));  // programmer error: Wc2 must be >= 0
+    const Scalar h2 = p.h * p.h;
+    CentralDifferencePoints w;
+    w.spread = p.h;
+    w.wm0 = (h2 - Scalar(kN)) / h2;
+    w.wi = Scalar(1) / (Scalar(2) * h2);
+    w.wc1 = Scalar(1) / (Scalar(4) * h2);
+    w.wc2 = (h2 - Scalar(1)) / (Scalar(4) * h2 * h2);
+    w.sqrt_wc1 = T::sqrt(w.wc1);
+    w.sqrt_wc2 = T::sqrt(w.wc2);
+    return w;
+  }
+
+  /// Time update, algorithm 9: P- = sum_(i=1..n) [Wc1 D1_i D1_i^T +
+  /// Wc2 D2_i D2_i^T] + Q, symmetrised.
+  Cov covariance(const Points& Y, const State& /*x*/, const Cov& Q) const {
+    Cov D1, D2;
+    state_differences(Y, D1, D2);
+    return symmetrised(D1 * D1.transpose() * wc1 + D2 * D2.transpose() * wc2 + Q);
+  }
+
+  /// Measurement update, algorithm 9: S = the same two sums over Z + R
+  /// (symmetrised) and Pxz = sqrt(Wc1) L D1^T, for X = draw(x, L, h).
+  template <class Measurement, int kM>
+  void moments(const Measurement& h, const Points& /*X*/, const State& /*x*/, const Cov& L,
+               const Mat<Scalar, kM, kCount>& Z, const Vec<Scalar, kM>& /*z_mean*/, const Mat<Scalar, kM, kM>& R,
+               Mat<Scalar, kM, kM>& S, Mat<Scalar, kN, kM>& Pxz) const {
+    Mat<Scalar, kM, kN> D1, D2;
+    measurement_differences(h, Z, D1, D2);
+    S = symmetrised(D1 * D1.transpose() * wc1 + D2 * D2.transpose() * wc2 + R);
+    Pxz = L * D1.transpose() * sqrt_wc1;
+  }
+
+  /// Square-root time update, algorithm 11: Sx- = qr{[sqrt(Wc1) D1,
+  /// sqrt(Wc2) D2, Sq]}.
+  /// @return kOk (the weights are non-negative: no downdate to fail).
+  Status sqrt_covariance(const Points& Y, const State& /*x*/, const Cov& Sq, Cov& Sx) const {
+    Cov D1, D2;
+    state_differences(Y, D1, D2);
+    Mat<Scalar, kN, 3 * kN> A;
+    A.template leftCols<kN>() = D1 * sqrt_wc1;
+    A.template middleCols<kN>(kN) = D2 * sqrt_wc2;
+    A.template rightCols<kN>() = Sq;
+    Sx = triangularise(A);
+    return Status::kOk;
+  }
+
+  /// Square-root measurement update, algorithm 11: Sy = qr{[sqrt(Wc1) D1,
+  /// sqrt(Wc2) D2, Sr]} over Z and Pxz = sqrt(Wc1) Sx D1^T, for
+  /// X = draw(x, Sx, h).
+  /// @return kOk.
+  template <class Measurement, int kM>
+  Status sqrt_moments(const Measurement& h, const Points& /*X*/, const State& /*x*/, const Cov& Sx,
+                      const Mat<Scalar, kM, kCount>& Z, const Vec<Scalar, kM>& /*z_mean*/,
+                      const Mat<Scalar, kM, kM>& Sr, Mat<Scalar, kM, kM>& Sy, Mat<Scalar, kN, kM>& Pxz) const {
+    Mat<Scalar, kM, kN> D1, D2;
+    measurement_differences(h, Z, D1, D2);
+    Mat<Scalar, kM, 2 * kN + kM> A;
+    A.template leftCols<kN>() = D1 * sqrt_wc1;
+    A.template middleCols<kN>(kN) = D2 * sqrt_wc2;
+    A.template rightCols<kM>() = Sr;
+    Sy = triangularise(A);
+    Pxz = Sx * D1.transpose() * sqrt_wc1;
+    return Status::kOk;
+  }
+
+ private:
+  static void state_differences(const Points& Y, Cov& D1, Cov& D2) {
+    sigma::central_differences<kN>(Y, [](const State& a, const State& b) -> State { return a - b; }, D1, D2);
+  }
+
+  template <class Measurement, int kM>
+  static void measurement_differences(const Measurement& h, const Mat<Scalar, kM, kCount>& Z,
+                                      Mat<Scalar, kM, kN>& D1, Mat<Scalar, kM, kN>& D2) {
+    using MeasVec = Vec<Scalar, kM>;
+    sigma::central_differences<kN>(
+        Z, [&h](const MeasVec& a, const MeasVec& b) -> MeasVec { return h.residual(a, b); }, D1, D2);
+  }
+};
+
 }  // namespace kestrel

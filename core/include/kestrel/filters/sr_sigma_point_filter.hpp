@@ -1,30 +1,39 @@
-// Square-root central difference Kalman filter (SPEC section 5; paper 001
-// section 3.3 and table 5, which is van der Merwe 2004 algorithm 11,
-// additive noise). Carries the lower-triangular factor Sx (P = Sx Sx^T);
-// same points and weights as the CDKF (filters/cdkf.hpp) and in exact
-// arithmetic the same estimates (tested to 1e-9 relative in double). All
-// CDKF weights are positive, so the time update needs no rank-1 update.
+// The square-root sigma-point Kalman filter, additive noise, over a choice of
+// point set (SPEC section 5; paper 001 section 3.3): SrUkf is the
+// square-root UKF (table 4, which is van der Merwe and Wan 2001 / van der
+// Merwe 2004 algorithm 10); SrCdkf is the square-root CDKF (table 5, which
+// is van der Merwe 2004 algorithm 11). It carries the lower-triangular
+// factor Sx (P = Sx Sx^T) instead of P, so no Cholesky factorisation is
+// taken per step; same points and weights as the plain form
+// (filters/sigma_point_filter.hpp), and in exact arithmetic the same
+// estimates (tested to 1e-9 relative in double). The point set
+// (filters/sigma_points.hpp) forms the factors; this file holds the steps
+// both share.
 //
-// predict(dt, Q):  X = [x, x +- h Sx], Y_i = f(X_i, dt), x- = sum Wm_i Y_i,
-//   Sx- = qr{ [sqrt(Wc1) (Y_(1..n) - Y_(n+1..2n)),
-//              sqrt(Wc2) (Y_(1..n) + Y_(n+1..2n) - 2 Y_0), sqrt(Q)] }.
+// predict(dt, Q):  X = [x, x + c Sx, x - c Sx], Y_i = f(X_i, dt),
+//   x- = sum Wm_i Y_i, Sx- = the point set's factor of Y with sqrt(Q)
+//   (UnscentedPoints: qr{[sqrt(W_i) (Y_(1..2n) - x-), sqrt(Q)]} and a rank-1
+//   update by Y_0 - x- with Wc_0; CentralDifferencePoints: qr{[sqrt(Wc1) D1,
+//   sqrt(Wc2) D2, sqrt(Q)]}).
 // update(z, R):    points redrawn from (x-, Sx-), Z_i = h(X_i), z- = mean,
-//   Sy = qr{ [sqrt(Wc1) (Z_(1..n) - Z_(n+1..2n)),
-//             sqrt(Wc2) (Z_(1..n) + Z_(n+1..2n) - 2 Z_0), sqrt(R)] },
-//   Pxz = sqrt(Wc1) Sx- [Z_(1..n) - Z_(n+1..2n)]^T, K = (Pxz / Sy^T) / Sy,
-//   x+ = x- + K residual(z, z-), Sx+ = cholupdate(Sx-, K Sy, -1).
-// Measurement differences go through residual() (filters/sigma_points.hpp).
+//   Sy and Pxz from the point set (the same forms over Z with sqrt(R)),
+//   K = (Pxz / Sy^T) / Sy, x+ = x- + K residual(z, z-),
+//   Sx+ = cholupdate(Sx-, K Sy, -1) (a sequence of kMeasDim rank-1 downdates).
+// qr{} is Householder triangularisation (math/triangular.hpp); cholupdate is
+// math/cholesky_update.hpp (Eigen's LLT::rankUpdate allocates). sqrt(Q) and
+// sqrt(R) are semidefinite Cholesky factors (the DWNA Q of CV-2D is singular).
 // With an affine (block-diagonal) motion model the time update is taken in
 // its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block,
 // the QR on the compound matrix's block profile: sqrt_time_update.hpp),
-// exactly the point form for such a model (sigma_points.hpp).
+// exactly the point form of either point set for such a model
+// (filters/sigma_points.hpp).
 //
-// Commit-on-success: kNonFinite; kNotPositiveDefinite when the downdate
-// would lose positive definiteness, Q or R is indefinite, or Sy is singular;
+// Commit-on-success: kNonFinite; kNotPositiveDefinite when a downdate would
+// lose positive definiteness, Q or R is indefinite, or Sy is singular;
 // x and Sx unchanged on error.
 #pragma once
 
-#include "kestrel/filters/innovation.hpp"
+#include "kestrel/filters/sigma_point_parts.hpp"
 #include "kestrel/filters/sigma_points.hpp"
 #include "kestrel/filters/sqrt_time_update.hpp"
 #include "kestrel/math/cholesky_update.hpp"
@@ -37,39 +46,22 @@
 
 namespace kestrel {
 
-template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
-class SrCdkf {
- public:
-  using Scalar = typename Motion::Scalar;
-  static constexpr int kStateDim = Motion::kStateDim;
-  static constexpr int kMeasDim = Measurement::kMeasDim;
-  static constexpr int kSigmaCount = kSigmaPointCount<kStateDim>;
-  using MotionModel = Motion;
-  using MeasurementModel = Measurement;
-  using Layout = typename Motion::Layout;
-  using State = typename Motion::State;
-  using Cov = typename Motion::Cov;
-  using MeasVec = typename Measurement::Measurement;
-  using MeasCov = typename Measurement::NoiseCov;
-  using Innov = Innovation<Scalar, kMeasDim>;
-  using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
-  using Params = CentralDifferenceParams<Scalar>;
-  using Weights = CentralDifferenceWeights<Scalar, kStateDim>;
-  /// Closed-form time update of an affine (block-diagonal) motion model
-  /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
-  static constexpr bool kAffinePredict = sigma::kAffineTimeUpdate<Motion>;
+/// PointSet<Scalar, n> is a point set of sigma_points.hpp (UnscentedPoints,
+/// CentralDifferencePoints); the names, models, weights, x and diagnostics
+/// are sigma::FilterParts (sigma_point_parts.hpp).
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement, template <class, int> class PointSet>
+class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet> {
+  using Base = sigma::FilterParts<Motion, Measurement, PointSet>;
+  using Base::motion_, Base::measurement_, Base::w_, Base::x_, Base::diag_, Base::fail;
 
-  SrCdkf() : SrCdkf(Motion{}, Measurement{}) {}
-  SrCdkf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
-      : motion_(motion),
-        measurement_(measurement),
-        params_(params),
-        w_(Weights::from(params)),
-        x_(State::Zero()),
-        Sx_(Cov::Identity()),
-        P_(Cov::Identity()) {
-    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
-  }
+ public:
+  using typename Base::Scalar, typename Base::State, typename Base::Cov, typename Base::MeasVec,
+      typename Base::MeasCov, typename Base::Innov, typename Base::Params;
+  using Base::kStateDim, Base::kMeasDim, Base::kAffinePredict;
+
+  SrSigmaPointFilter() : SrSigmaPointFilter(Motion{}, Measurement{}) {}
+  SrSigmaPointFilter(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+      : Base(motion, measurement, params), Sx_(Cov::Identity()), P_(Cov::Identity()) {}
 
   /// Set the state and covariance (factorised once here).
   /// @return kOk; kNonFinite; kNotPositiveDefinite (filter unchanged on error).
@@ -110,14 +102,9 @@ class SrCdkf {
       const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
       const auto Y = sigma::propagate(motion_, X, dt);
       const State x = sigma::state_mean(Y, w_.wi);
-      Mat<Scalar, kStateDim, kStateDim> D1, D2;
-      sigma::central_differences<kStateDim>(Y, [](const State& a, const State& b) -> State { return a - b; },
-                                            D1, D2);
-      Mat<Scalar, kStateDim, 3 * kStateDim> A;
-      A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
-      A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
-      A.template rightCols<kStateDim>() = Sq;
-      const Cov S = triangularise(A);
+      Cov S;
+      const Status st = w_.sqrt_covariance(Y, x, Sq, S);
+      if (st != Status::kOk) return st;
       if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
       commit(x, S);
       return Status::kOk;
@@ -150,6 +137,7 @@ class SrCdkf {
     Moments m;
     const Status st = moments(z, R, m);
     if (st != Status::kOk) return fail(st);
+    // K^T = Sy^-T (Sy^-1 Pxz^T).
     const Mat<Scalar, kMeasDim, kStateDim> Kt = solve_lower_transposed<Scalar, kMeasDim, kStateDim>(
         m.Sy, solve_lower<Scalar, kMeasDim, kStateDim>(m.Sy, m.Pxz.transpose()));
     const Mat<Scalar, kStateDim, kMeasDim> K = Kt.transpose();
@@ -168,19 +156,10 @@ class SrCdkf {
     return Status::kOk;
   }
 
-  const State& x() const { return x_; }
   /// P = Sx Sx^T, formed once per committed step.
   const Cov& P() const { return P_; }
   /// Lower-triangular square root of P carried by the filter.
   const Cov& sqrt_P() const { return Sx_; }
-  const Motion& motion() const { return motion_; }
-  const Measurement& measurement() const { return measurement_; }
-  Motion& motion() { return motion_; }
-  Measurement& measurement() { return measurement_; }
-  const Params& params() const { return params_; }
-  const Weights& weights() const { return w_; }
-  /// Diagnostics of the last update attempt.
-  const Diagnostics& diagnostics() const { return diag_; }
 
  private:
   struct Moments {
@@ -190,9 +169,11 @@ class SrCdkf {
   };
 
   /// Closed-form time update of an affine motion, Sq = sqrt(Q) lower
-  /// triangular: sqrt(Wc1) D1 = F Sx and D2 = 0 (sigma_points.hpp), so
-  /// x- = f(x) and Sx- = qr{[F Sx, Sq]} on its block profile
-  /// (sqrt_time_update.hpp), a factor of F P F^T + Q. No points drawn.
+  /// triangular: x- = f(x), Sx- = qr{[F Sx, Sq]} on its block profile
+  /// (sqrt_time_update.hpp), a factor of F P F^T + Q; the point forms'
+  /// extra terms vanish for such a model (the unscented rank-1 update by
+  /// Y_0 - x- = 0, the central-difference D2 = 0: sigma_points.hpp).
+  /// No points drawn.
   Status predict_affine(Scalar dt, const Cov& Sq) {
     const State x = motion_.propagate(x_, dt);
     const Cov S = sigma::affine_sqrt_time_update(motion_, Sx_, Sq, dt);
@@ -209,20 +190,11 @@ class SrCdkf {
     const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
     const auto Z = sigma::measure_drawn(measurement_, X, Sx_);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
-    Mat<Scalar, kMeasDim, kStateDim> D1, D2;
-    const Measurement& h = measurement_;
-    sigma::central_differences<kStateDim>(
-        Z, [&h](const MeasVec& a, const MeasVec& b) -> MeasVec { return h.residual(a, b); }, D1, D2);
-    Mat<Scalar, kMeasDim, 2 * kStateDim + kMeasDim> A;
-    A.template leftCols<kStateDim>() = D1 * w_.sqrt_wc1;
-    A.template middleCols<kStateDim>(kStateDim) = D2 * w_.sqrt_wc2;
-    A.template rightCols<kMeasDim>() = Sr;
-    const MeasCov Sy = triangularise(A);
+    const Status st = w_.sqrt_moments(measurement_, X, x_, Sx_, Z, z_mean, Sr, m.Sy, m.Pxz);
+    if (st != Status::kOk) return st;
     for (int i = 0; i < kMeasDim; ++i) {
-      if (!(Sy(i, i) > Scalar(0))) return Status::kNotPositiveDefinite;
+      if (!(m.Sy(i, i) > Scalar(0))) return Status::kNotPositiveDefinite;
     }
-    m.Sy = Sy;
-    m.Pxz = Sx_ * D1.transpose() * w_.sqrt_wc1;
     m.nu = measurement_.residual(z, z_mean);
     if (!all_finite(m.Sy) || !all_finite(m.Pxz) || !all_finite(m.nu)) return Status::kNonFinite;
     return Status::kOk;
@@ -234,19 +206,16 @@ class SrCdkf {
     P_ = symmetrised(Sx_ * Sx_.transpose());
   }
 
-  Status fail(Status s) {
-    diag_.status = s;
-    return s;
-  }
-
-  Motion motion_;
-  Measurement measurement_;
-  Params params_;
-  Weights w_;
-  State x_;
   Cov Sx_;
   Cov P_;
-  Diagnostics diag_;
 };
+
+/// Square-root UKF (algorithm 10), the Ukf's parameters.
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+using SrUkf = SrSigmaPointFilter<Motion, Measurement, UnscentedPoints>;
+
+/// Square-root CDKF (algorithm 11), the Cdkf's parameter.
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+using SrCdkf = SrSigmaPointFilter<Motion, Measurement, CentralDifferencePoints>;
 
 }  // namespace kestrel

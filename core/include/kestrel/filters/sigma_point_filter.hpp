@@ -1,22 +1,30 @@
-// Unscented Kalman filter, scaled unscented transform, additive noise (SPEC
-// section 5; paper 001 section 3.2 and table 2, which is van der Merwe 2004,
-// algorithm 8 / Wan and van der Merwe 2000). Generic over any motion and
-// measurement model pair the EKF takes; fixed-size storage, 2n + 1 sigma
-// points at compile time.
+// The sigma-point Kalman filter, additive noise, over a choice of point set
+// (SPEC section 5; paper 001 section 3.2): Ukf is the unscented Kalman
+// filter, scaled unscented transform (table 2, which is van der Merwe 2004
+// algorithm 8 / Wan and van der Merwe 2000); Cdkf is the central difference
+// Kalman filter, Stirling's interpolation in place of the Taylor series
+// (table 3, which is van der Merwe 2004 section 3.4.1 and algorithm 9, after
+// Norgaard, Poulsen and Ravn 2000 and Ito and Xiong 2000; one parameter, the
+// half-width h, h^2 = 3 optimal for a Gaussian prior). The point set
+// (filters/sigma_points.hpp) holds the weights and how the covariances are
+// formed; this file holds the steps both share. Generic over any motion and
+// measurement model pair the EKF takes; fixed-size storage, 2n + 1 points at
+// compile time.
 //
-// predict(dt, Q):  X = [x, x +- c L] with P = L L^T (c = sqrt(n + lambda)),
-//   Y_i = f(X_i, dt), x- = sum Wm_i Y_i,
-//   P- = sum Wc_i (Y_i - x-)(Y_i - x-)^T + Q.
-// update(z, R):    sigma points are redrawn from (x-, P-) (the additive-noise
-//   form; van der Merwe's alternative of augmenting the propagated set is
-//   not used so that predict and update stand alone, as the gate needs),
-//   Z_i = h(X_i), z- = sum Wm_i Z_i, S = sum Wc_i dZ_i dZ_i^T + R,
-//   Pxz = sum Wc_i (X_i - x-) dZ_i^T, K = Pxz S^-1,
+// predict(dt, Q):  X = [x, x + c L, x - c L] with P = L L^T (c the spread),
+//   Y_i = f(X_i, dt), x- = sum Wm_i Y_i, P- = the point set's covariance of
+//   Y + Q (UnscentedPoints: sum Wc_i (Y_i - x-)(Y_i - x-)^T;
+//   CentralDifferencePoints: Wc1 and Wc2 sums of first- and second-order
+//   differences).
+// update(z, R):    points redrawn from (x-, P-) (the additive-noise form;
+//   van der Merwe's alternative of augmenting the propagated set is not used
+//   so that predict and update stand alone, as the gate needs), Z_i = h(X_i),
+//   z- = sum Wm_i Z_i, S and Pxz from the point set, K = Pxz S^-1,
 //   x+ = x- + K residual(z, z-), P+ = P- - K S K^T (symmetrised).
 // On a linear model this is exactly the Kalman filter (tested).
 // With an affine (block-diagonal) motion model the time update is taken in
 // its closed form x- = f(x), P- = F P F^T + Q per axis block, exactly the
-// unscented transform of such a model (filters/sigma_points.hpp).
+// transform of either point set for such a model (filters/sigma_points.hpp).
 // Bearings: means and deviations go through the model's residual(), see
 // filters/sigma_points.hpp.
 //
@@ -25,7 +33,7 @@
 // updated P returns kNotPositiveDefinite; x and P are then unchanged.
 #pragma once
 
-#include "kestrel/filters/innovation.hpp"
+#include "kestrel/filters/sigma_point_parts.hpp"
 #include "kestrel/filters/sigma_points.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
@@ -36,38 +44,22 @@
 
 namespace kestrel {
 
-template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
-class Ukf {
- public:
-  using Scalar = typename Motion::Scalar;
-  static constexpr int kStateDim = Motion::kStateDim;
-  static constexpr int kMeasDim = Measurement::kMeasDim;
-  static constexpr int kSigmaCount = kSigmaPointCount<kStateDim>;
-  using MotionModel = Motion;
-  using MeasurementModel = Measurement;
-  using Layout = typename Motion::Layout;
-  using State = typename Motion::State;
-  using Cov = typename Motion::Cov;
-  using MeasVec = typename Measurement::Measurement;
-  using MeasCov = typename Measurement::NoiseCov;
-  using Innov = Innovation<Scalar, kMeasDim>;
-  using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
-  using Params = UnscentedParams<Scalar, kStateDim>;
-  using Weights = UnscentedWeights<Scalar, kStateDim>;
-  /// Closed-form time update of an affine (block-diagonal) motion model
-  /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
-  static constexpr bool kAffinePredict = sigma::kAffineTimeUpdate<Motion>;
+/// PointSet<Scalar, n> is a point set of sigma_points.hpp (UnscentedPoints,
+/// CentralDifferencePoints); the names, models, weights, x and diagnostics
+/// are sigma::FilterParts (sigma_point_parts.hpp).
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement, template <class, int> class PointSet>
+class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet> {
+  using Base = sigma::FilterParts<Motion, Measurement, PointSet>;
+  using Base::motion_, Base::measurement_, Base::w_, Base::x_, Base::diag_, Base::fail;
 
-  Ukf() : Ukf(Motion{}, Measurement{}) {}
-  Ukf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
-      : motion_(motion),
-        measurement_(measurement),
-        params_(params),
-        w_(Weights::from(params)),
-        x_(State::Zero()),
-        P_(Cov::Identity()) {
-    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
-  }
+ public:
+  using typename Base::Scalar, typename Base::State, typename Base::Cov, typename Base::MeasVec,
+      typename Base::MeasCov, typename Base::Innov, typename Base::Params;
+  using Base::kStateDim, Base::kMeasDim, Base::kAffinePredict;
+
+  SigmaPointFilter() : SigmaPointFilter(Motion{}, Measurement{}) {}
+  SigmaPointFilter(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+      : Base(motion, measurement, params), P_(Cov::Identity()) {}
 
   /// Set the state and covariance.
   /// @return kOk; kNonFinite (NaN/Inf); kNotPositiveDefinite (P has no
@@ -101,7 +93,7 @@ class Ukf {
     State x;
     Cov P;
     if constexpr (kAffinePredict) {
-      // Affine motion: the unscented transform is exactly f(x) and
+      // Affine motion: either point set's transform is exactly f(x) and
       // F P F^T + Q (sigma_points.hpp), no points drawn. P_ is positive
       // definite here (reset() and update() check it; F is invertible).
       x = motion_.propagate(x_, dt);
@@ -112,7 +104,7 @@ class Ukf {
       const auto X = sigma::draw<Scalar, kStateDim>(x_, llt.matrixL(), w_.spread);
       const auto Y = sigma::propagate(motion_, X, dt);
       x = sigma::state_mean(Y, w_.wi);
-      P = symmetrised(weighted_outer(Y, x) + Q);
+      P = w_.covariance(Y, x, Q);
     }
     return commit_prediction(x, P);
   }
@@ -159,16 +151,7 @@ class Ukf {
     return Status::kOk;
   }
 
-  const State& x() const { return x_; }
   const Cov& P() const { return P_; }
-  const Motion& motion() const { return motion_; }
-  const Measurement& measurement() const { return measurement_; }
-  Motion& motion() { return motion_; }
-  Measurement& measurement() { return measurement_; }
-  const Params& params() const { return params_; }
-  const Weights& weights() const { return w_; }
-  /// Diagnostics of the last update attempt.
-  const Diagnostics& diagnostics() const { return diag_; }
 
  private:
   /// Statistics of the predicted measurement shared by innovation() and update().
@@ -187,33 +170,12 @@ class Ukf {
     const auto X = sigma::draw<Scalar, kStateDim>(x_, L, w_.spread);
     const auto Z = sigma::measure_drawn(measurement_, X, L);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
-    const auto dZ = sigma::measurement_deviations(measurement_, Z, z_mean);
-    // Deviations of the redrawn points from their own mean x_: X_0 - x = 0
-    // exactly, so only X_1..X_2n contribute to Pxz.
-    MeasCov S = dZ.col(0) * dZ.col(0).transpose() * w_.wc0;
-    Mat<Scalar, kStateDim, kMeasDim> Pxz = Mat<Scalar, kStateDim, kMeasDim>::Zero();
-    for (int i = 1; i < kSigmaCount; ++i) {
-      S += dZ.col(i) * dZ.col(i).transpose() * w_.wi;
-      Pxz += (X.col(i) - x_) * dZ.col(i).transpose() * w_.wi;
-    }
-    m.S = symmetrised(S + R);
-    m.Pxz = Pxz;
+    w_.moments(measurement_, X, x_, L, Z, z_mean, R, m.S, m.Pxz);
     m.nu = measurement_.residual(z, z_mean);
     if (!all_finite(m.S) || !all_finite(m.Pxz) || !all_finite(m.nu)) return Status::kNonFinite;
     m.llt_S.compute(m.S);
     if (m.llt_S.info() != Eigen::Success) return Status::kNotPositiveDefinite;
     return Status::kOk;
-  }
-
-  /// sum Wc_i (Y_i - m)(Y_i - m)^T.
-  Cov weighted_outer(const sigma::Points<Scalar, kStateDim>& Y, const State& m) const {
-    const State d0 = Y.col(0) - m;
-    Cov P = d0 * d0.transpose() * w_.wc0;
-    for (int i = 1; i < kSigmaCount; ++i) {
-      const State d = Y.col(i) - m;
-      P += d * d.transpose() * w_.wi;
-    }
-    return P;
   }
 
   /// Commit a predicted x- and P-, or return kNonFinite and keep the filter.
@@ -224,18 +186,17 @@ class Ukf {
     return Status::kOk;
   }
 
-  Status fail(Status s) {
-    diag_.status = s;
-    return s;
-  }
-
-  Motion motion_;
-  Measurement measurement_;
-  Params params_;
-  Weights w_;
-  State x_;
   Cov P_;
-  Diagnostics diag_;
 };
+
+/// Unscented Kalman filter (algorithm 8), SPEC 5 parameters by default:
+/// UnscentedParams<S, n>{alpha = 1, beta = 2, kappa = 3 - n}.
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+using Ukf = SigmaPointFilter<Motion, Measurement, UnscentedPoints>;
+
+/// Central difference Kalman filter (algorithm 9), SPEC 5 parameter by
+/// default: CentralDifferenceParams<S>{h = sqrt(3)}.
+template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
+using Cdkf = SigmaPointFilter<Motion, Measurement, CentralDifferencePoints>;
 
 }  // namespace kestrel
