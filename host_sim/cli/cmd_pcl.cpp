@@ -94,21 +94,19 @@ int cmd_pcl(const PclOptions& o) {
     return v;
   };
   if (o.detection_probability) {
-    params.pda.detection_probability = probability(*o.detection_probability, "--detection-probability");
-    params.score.detection_probability = params.pda.detection_probability;
+    params.detection_probability = probability(*o.detection_probability, "--detection-probability");
   }
   if (o.clutter_density) {
-    params.score.clutter_density = density(*o.clutter_density, "--clutter-density");
-    params.pda.clutter_density = params.score.clutter_density;
+    params.clutter_density = density(*o.clutter_density, "--clutter-density");
   }
   if (o.new_target_density) {
-    params.score.new_target_density = density(*o.new_target_density, "--new-target-density");
+    params.new_target_density = density(*o.new_target_density, "--new-target-density");
   }
   if (o.false_track_probability) {
-    params.score.false_track_probability = probability(*o.false_track_probability, "--false-track-probability");
+    params.false_track_probability = probability(*o.false_track_probability, "--false-track-probability");
   }
   if (o.missed_track_probability) {
-    params.score.missed_track_probability = probability(*o.missed_track_probability, "--missed-track-probability");
+    params.missed_track_probability = probability(*o.missed_track_probability, "--missed-track-probability");
   }
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");

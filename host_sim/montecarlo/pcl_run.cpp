@@ -132,10 +132,8 @@ PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario) {
   p.sigma_doppler_hz = scenario.sigma_fd_hz;
   // Clutter is uniform over Rb x fD; the tracker measures dRb = -lambda fD.
   const double volume = scenario.clutter_rb_max_m * 2.0 * scenario.clutter_fd_max_hz * pcl_lambda_m(scenario);
-  p.pda.detection_probability = scenario.pd;
-  p.pda.clutter_density = scenario.clutter_mean / volume;
-  p.score.detection_probability = scenario.pd;
-  p.score.clutter_density = p.pda.clutter_density;
+  p.detection_probability = scenario.pd;
+  p.clutter_density = scenario.clutter_mean / volume;
   return p;
 }
 

@@ -398,7 +398,7 @@ SCENARIO("the track score starts a single-point track below T_d, confirms it on 
                                       kestrel::SequentialLlr>;
   // PCL-002's clutter density and a rare new target: the prior odds of a
   // lone plot, ln(beta_NT / beta_FA) = -4.2, lie below T_d = -3.0.
-  const kestrel::SequentialLlrParams& llr = kParams.score;
+  const kestrel::SequentialLlrParams llr = kestrel::pcl_score_params(kParams);
   const double td = std::log(llr.missed_track_probability / (1 - llr.false_track_probability));
   REQUIRE(std::log(llr.new_target_density / llr.clutter_density) < td);
   GIVEN("the target detected in every frame") {

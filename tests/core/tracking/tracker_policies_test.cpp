@@ -24,7 +24,6 @@ using kestrel::TrackStatus;
 /// Candidate pairs given by a d2 table (the tracker's AssociationCandidates
 /// interface), recording what the associator assigns.
 struct TableCandidates {
-  using Innov = kestrel::Innovation<double, 2>;
   static constexpr std::size_t kTracks = 3;
   static constexpr std::size_t kPlots = 3;
   double d2[kTracks][kPlots] = {};
@@ -37,12 +36,11 @@ struct TableCandidates {
   std::size_t tracks() const { return n_tracks; }
   std::size_t measurements() const { return n_plots; }
   bool free(std::size_t j) const { return !used[j]; }
-  Innov innovation(std::size_t k, std::size_t j) const {
-    return Innov{kestrel::Vec<double, 2>::Zero(), kestrel::Mat<double, 2, 2>::Identity(), d2[k][j], Status::kOk};
-  }
-  bool gated(const Innov& in) const { return in.status == Status::kOk && in.d2 <= threshold; }
+  std::size_t track(std::size_t k) const { return k; }
+  kestrel::PlotDistance<double> distance(std::size_t k, std::size_t j) const { return {d2[k][j], Status::kOk}; }
+  bool gated(const kestrel::PlotDistance<double>& d) const { return d.status == Status::kOk && d.d2 <= threshold; }
   double gate_threshold() const { return threshold; }
-  void assign(std::size_t k, std::size_t j, const Innov&) {
+  void assign(std::size_t k, std::size_t j) {
     REQUIRE_FALSE(used[j]);
     REQUIRE(assigned[k] == -1);
     assigned[k] = static_cast<int>(j);

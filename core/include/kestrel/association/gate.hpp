@@ -29,6 +29,7 @@ struct EllipsoidalGate {
   bool accepts(const Innovation<Scalar, kMeasDim>& in) const {
     return in.status == Status::kOk && in.d2 <= threshold;
   }
+  bool accepts(const PlotDistance<Scalar>& d) const { return d.status == Status::kOk && d.d2 <= threshold; }
 };
 
 }  // namespace kestrel

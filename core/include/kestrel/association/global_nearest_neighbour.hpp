@@ -36,13 +36,14 @@ class GlobalNearestNeighbour {
     bool any = false;
     for (std::size_t k = 0; k < kMaxTracks; ++k) {
       if (k >= n) break;
+      const auto track = c.track(k);
       for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
         if (j >= m) break;
         Scalar cost = forbidden;
         if (c.free(j)) {
-          const auto in = c.innovation(k, j);
-          if (c.gated(in)) {
-            cost = in.d2;
+          const auto d = c.distance(track, j);
+          if (c.gated(d)) {
+            cost = d.d2;
             any = true;
           }
         }
@@ -59,7 +60,7 @@ class GlobalNearestNeighbour {
       if (k >= n) break;
       const int j = col_of_row[k];
       if (j < 0) continue;
-      c.assign(k, static_cast<std::size_t>(j), c.innovation(k, static_cast<std::size_t>(j)));
+      c.assign(k, static_cast<std::size_t>(j));
     }
   }
 

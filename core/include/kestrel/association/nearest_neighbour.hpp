@@ -17,27 +17,26 @@ class NearestNeighbour {
 
   /// @param c the tracker's candidate pairs (tracking/tracker.hpp,
   ///          AssociationCandidates): tracks(), measurements(), free(j),
-  ///          innovation(k, j), gated(in), assign(k, j, in).
+  ///          track(k), distance(track, j), gated(d),
+  ///          assign(k, j).
   template <class Candidates>
   void associate(Candidates& c) const {
     for (std::size_t k = 0; k < kMaxTracks; ++k) {
       if (k >= c.tracks()) break;
+      const auto track = c.track(k);
       std::size_t best = kMaxMeasurements;
-      typename Candidates::Innov best_in;  // read only once best is set; zeroed for the compiler's sake
-      best_in.nu.setZero();
-      best_in.S.setZero();
-      best_in.d2 = Scalar(0);
+      Scalar best_d2{};
       for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
         if (j >= c.measurements()) break;
         if (!c.free(j)) continue;
-        const auto in = c.innovation(k, j);
-        if (!c.gated(in)) continue;
-        if (best == kMaxMeasurements || in.d2 < best_in.d2) {
+        const auto d = c.distance(track, j);
+        if (!c.gated(d)) continue;
+        if (best == kMaxMeasurements || d.d2 < best_d2) {
           best = j;
-          best_in = in;
+          best_d2 = d.d2;
         }
       }
-      if (best != kMaxMeasurements) c.assign(k, best, best_in);
+      if (best != kMaxMeasurements) c.assign(k, best);
     }
   }
 };

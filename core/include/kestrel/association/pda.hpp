@@ -49,25 +49,21 @@ class ProbabilisticDataAssociation {
     const Scalar log_miss_odds = T::from_double(std::log((1.0 - pd * pg) / pd));
     for (std::size_t k = 0; k < kMaxTracks; ++k) {
       if (k >= c.tracks()) break;
+      const auto track = c.track(k);
       std::size_t n = 0;
       Scalar d2[kMaxMeasurements] = {};
-      typename Candidates::Innov first;  // read only once n > 0; zeroed for the compiler's sake
-      first.nu.setZero();
-      first.S.setZero();
-      first.d2 = Scalar(0);
       for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
         if (j >= c.measurements()) break;
         if (!c.free(j)) continue;
-        const auto in = c.innovation(k, j);
-        if (!c.gated(in)) continue;
-        if (n == 0) first = in;
+        const auto d = c.distance(track, j);
+        if (!c.gated(d)) continue;
         index_[n] = j;
-        d2[n] = in.d2;
+        d2[n] = d.d2;
         ++n;
       }
       if (n == 0) continue;
       Scalar ln_det{};
-      if (!log_det_spd(first.S, ln_det)) continue;
+      if (!log_det_spd(c.innovation(k, index_[0]).S, ln_det)) continue;  // S: the same for every plot of the track
       // ln b; the weights are normalised in the log domain (largest term 0).
       Scalar log_lambda;
       if (params_.clutter_density > 0.0) {

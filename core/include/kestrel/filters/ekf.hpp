@@ -194,6 +194,40 @@ class Ekf {
     }
   }
 
+  /// What every plot is measured against until x or P changes: h(x) and
+  /// the factor of S = H P H^T + R (structured batch path). A gate takes it
+  /// once per track and frame; each plot then costs its residual and one
+  /// forward substitution. A snapshot: it reads the filter's measurement
+  /// model, so it lives no longer than the filter.
+  class PredictedMeasurement {
+   public:
+    /// nu^T S^-1 nu of z with its status, equal to innovation(z)'s d2 and
+    /// status at the state the snapshot was taken.
+    PlotDistance<Scalar> distance(const MeasVec& z) const {
+      if (!all_finite(z)) return {Scalar(0), Status::kNonFinite};
+      const MeasVec nu = measurement_->residual(z, z_hat_);
+      if (status_ == Status::kNonFinite || !all_finite(nu)) return {Scalar(0), Status::kNonFinite};
+      if (status_ != Status::kOk) return {Scalar(0), status_};
+      return {structure::forward_substitute(L_, nu).squaredNorm(), Status::kOk};
+    }
+
+   private:
+    friend class Ekf;
+    PredictedMeasurement(const Measurement& h, const MeasVec& z_hat, const MeasCov& L, Status s)
+        : measurement_(&h), z_hat_(z_hat), L_(L), status_(s) {}
+    const Measurement* measurement_;
+    MeasVec z_hat_;
+    MeasCov L_;
+    Status status_;
+  };
+
+  template <bool kEnabled = kSparseUpdate && kForm == EkfUpdateForm::kBatch>
+    requires kEnabled
+  PredictedMeasurement predicted_measurement() const {
+    const auto& lin = factored_linearisation();
+    return PredictedMeasurement(measurement_, lin.z_hat, lin.L, lin.factor_status);
+  }
+
   /// Innovation of z with an explicit measurement noise R.
   Innov innovation(const MeasVec& z, const MeasCov& R) const {
     Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};

@@ -18,6 +18,15 @@ struct Innovation {
   Status status;                      ///< kOk, kNonFinite or kNotPositiveDefinite.
 };
 
+/// The normalised distance of one plot from a track's predicted measurement:
+/// all a gate and an associator need per track-plot pair (the innovation
+/// itself is formed only for the plot a track takes).
+template <class Scalar>
+struct PlotDistance {
+  Scalar d2;      ///< nu^T S^-1 nu, unitless.
+  Status status;  ///< kOk, kNonFinite or kNotPositiveDefinite.
+};
+
 /// Last fusion attempt of a filter, readable after each update.
 template <class Scalar, int kMeasDim>
 struct FusionDiagnostics {

@@ -37,14 +37,19 @@ struct FloatingScalarTraits {
   static F exp(F v) { return std::exp(v); }
   static F max_value() { return std::numeric_limits<F>::max(); }
   /// (-pi, pi]: std::remainder gives [-pi, pi] with no loop; map -pi to +pi.
-  /// Fast path: an angle already in (-pi, pi] is returned as is, which is
-  /// exactly what remainder() returns for it (|a| <= 2pi/2 gives quotient 0),
-  /// so the bits are unchanged; it skips a slow libm call in the common case
-  /// (every residual of a CRPF particle goes through here).
+  /// Fast paths, bit for bit what remainder() returns: an angle already in
+  /// (-pi, pi] is returned as is (quotient 0), and one in (pi, 2pi] or
+  /// (-2pi, -pi] (the difference of two wrapped angles, every bearing
+  /// residual) moves by one turn, a subtraction that is exact there
+  /// (Sterbenz: the operands are within a factor 2). Both skip a slow libm
+  /// call in the common case (every gate test and every CRPF particle).
   static F wrap_angle(F a) {
+    constexpr F kTwoPi = static_cast<F>(2.0 * 3.14159265358979323846);
     if (a > -pi() && a <= pi()) return a;
-    const F r = std::remainder(a, static_cast<F>(2.0 * 3.14159265358979323846));
-    return r <= -pi() ? r + static_cast<F>(2.0 * 3.14159265358979323846) : r;
+    if (a > pi() && a <= kTwoPi) return a - kTwoPi;
+    if (a <= -pi() && a > -kTwoPi) return a + kTwoPi;
+    const F r = std::remainder(a, kTwoPi);
+    return r <= -pi() ? r + kTwoPi : r;
   }
 };
 }  // namespace detail

@@ -7,7 +7,7 @@
 // confirmation and deletion after a bounded coast or a bistatic-range
 // variance limit. The associator and the track manager are the tracker's
 // policies: GNN, PDA and the sequential track score compose the same way,
-// their parameters carried here.
+// with one P_D and one clutter density for both.
 //
 // The filter is Ekf on linear models, which is exactly the linear KF (the
 // Jacobians are the constant F and H, so the EKF equations reduce to the KF
@@ -47,12 +47,25 @@ struct PclTrackerParams {
   double max_rb_variance_m2 = 2500.0;     ///< Delete a track whose var(Rb) exceeds this (50 m sigma), m^2.
   double max_bistatic_range_m = 200000.0; ///< Candidates beyond are out of range (frame refused).
   double max_abs_doppler_hz = 5000.0;     ///< |fD| beyond is out of range (frame refused), Hz.
-  // Read only by the policies that use them. Densities are per m x m/s
+  // The sensor and the targets as the probabilistic policies see them (PDA,
+  // the track score), read only by those. Densities are per m x m/s
   // (Rb x dRb) and frame; PCL-002's 21 false candidates a frame spread over
   // 3000 m x 250 Hz (106.9 m/s) are 6.5e-5.
-  PdaParams pda{0.9, 0.0};                ///< ProbabilisticDataAssociation: P_D; clutter from the gate.
-  SequentialLlrParams score{0.9, 6.5e-5, 1.0e-6, 1.0e-4, 0.05};  ///< SequentialLlr.
+  double detection_probability = 0.9;        ///< P_D of a target's candidate (PDA, track score).
+  double clutter_density = 6.5e-5;           ///< False candidates per m x m/s and frame (PDA, track score).
+  double new_target_density = 1.0e-6;        ///< Track score: new targets per m x m/s and frame.
+  double false_track_probability = 1.0e-4;   ///< Track score: sets the confirmation threshold.
+  double missed_track_probability = 0.05;    ///< Track score: sets the deletion threshold.
 };
+
+/// PDA's parameters from the PCL parameters (one P_D, one clutter density).
+inline PdaParams pcl_pda_params(const PclTrackerParams& p) { return PdaParams{p.detection_probability, p.clutter_density}; }
+
+/// The track score's parameters from the PCL parameters.
+inline SequentialLlrParams pcl_score_params(const PclTrackerParams& p) {
+  return SequentialLlrParams{p.detection_probability, p.clutter_density, p.new_target_density,
+                             p.false_track_probability, p.missed_track_probability};
+}
 
 template <class Scalar>
 using PclMotion = BistaticCv1D<Scalar>;
@@ -140,9 +153,9 @@ PclTracker<PclKf<Scalar>, kMaxTracks, kMaxCandidates, Associator, Manager> make_
   using ManagerT = typename Composed::ManagerT;
   using AssociatorParams = typename Composed::AssociatorParams;
   ManagerT manager{};
-  if constexpr (std::is_constructible_v<ManagerT, const SequentialLlrParams&>) manager = ManagerT(p.score);
+  if constexpr (std::is_constructible_v<ManagerT, const SequentialLlrParams&>) manager = ManagerT(pcl_score_params(p));
   AssociatorParams associator{};
-  if constexpr (std::is_same_v<AssociatorParams, PdaParams>) associator = p.pda;
+  if constexpr (std::is_same_v<AssociatorParams, PdaParams>) associator = pcl_pda_params(p);
   return Composed(pcl_filter<Scalar>(p), pcl_initiator<Scalar>(p), pcl_tracker_config<Scalar>(p), manager,
                   associator);
 }

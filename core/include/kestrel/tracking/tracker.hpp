@@ -16,8 +16,10 @@
 //   capacities   kMaxTracks and kMaxMeasurements.
 // The tracker keeps what they share: validation, time, the gates, the
 // track table, the health rules below, statistics and reports.
-// Work is bounded by the capacities: kMaxTracks x kMaxMeasurements
-// innovations per frame at most, no allocation, no recursion. The per-track
+// Work is bounded by the capacities: kMaxTracks x kMaxMeasurements plot
+// distances per frame at most (per pair a residual and one forward
+// substitution when the filter predicts its measurement once per track,
+// PredictsMeasurement), no allocation, no recursion. The per-track
 // passes visit the active slots only (TrackTable::active_slots()).
 // A frame that fails validation (count over capacity, NaN/Inf, out of the
 // configured measurement box, time going backwards or jumping forward past
@@ -69,6 +71,14 @@ concept TrackingFilter = requires(F& f, const F& cf, const typename F::State& x,
   { f.update(z) } -> std::same_as<Status>;
   { cf.x() } -> std::convertible_to<typename F::State>;
   { cf.P() } -> std::convertible_to<typename F::Cov>;
+};
+
+/// A filter that hands out what every plot is measured against (Ekf: h(x)
+/// and the factor of S), so a plot's distance costs its residual and one
+/// substitution. Other filters are gated through innovation().
+template <class F>
+concept PredictsMeasurement = requires(const F& f, const typename F::MeasVec& z) {
+  { f.predicted_measurement().distance(z) } -> std::same_as<PlotDistance<typename F::Scalar>>;
 };
 
 /// A filter that can fold several plots in at once with association
@@ -178,20 +188,35 @@ class Tracker {
     std::size_t tracks() const { return count_; }
     std::size_t measurements() const { return scan_.count; }
     bool free(std::size_t j) const { return !used_[j]; }
+    /// Track k's side of all its pairs, taken once per track: everything
+    /// that does not depend on the plot.
+    auto track(std::size_t k) const {
+      const Filter& f = tracker_.table_[slot_[k]].filter;
+      if constexpr (PredictsMeasurement<Filter>) {
+        return f.predicted_measurement();
+      } else {
+        return ThroughInnovation{&f};
+      }
+    }
+    /// The normalised distance of measurement j from a track (track(k)):
+    /// the per-pair work of every associator.
+    template <class TrackSide>
+    PlotDistance<Scalar> distance(const TrackSide& track, std::size_t j) const {
+      return track.distance(scan_.z[j]);
+    }
     /// The innovation of measurement j against track k (pure).
     Innov innovation(std::size_t k, std::size_t j) const {
       return tracker_.table_[slot_[k]].filter.innovation(scan_.z[j]);
     }
+    bool gated(const PlotDistance<Scalar>& d) const { return gate_.accepts(d); }
     bool gated(const Innov& in) const { return gate_.accepts(in); }
     Scalar gate_threshold() const { return gate_.threshold; }
     /// P_G: the probability that the target's plot falls in the gate (1 for
     /// an explicit threshold, which the tracker takes as "ungated").
     Scalar gate_probability() const { return gate_probability_; }
-    /// Update track k with measurement j (`in`: its innovation). On success
-    /// j is used and k is hit; if the filter refuses, both stay open.
-    void assign(std::size_t k, std::size_t j, const Innov& in) {
-      tracker_.fold_in(slot_[k], scan_, j, in, gate_, used_, hit_, drop_);
-    }
+    /// Update track k with measurement j. On success j is used and k is
+    /// hit; if the filter refuses, both stay open.
+    void assign(std::size_t k, std::size_t j) { tracker_.fold_in(slot_[k], scan_, j, gate_, used_, hit_, drop_); }
     /// Update track k with the measurements index[0..n) weighted by
     /// beta[0..n), beta_none for none of them (probabilistic association;
     /// the filter needs update_pda). On success all n are used.
@@ -204,6 +229,13 @@ class Tracker {
 
    private:
     friend class Tracker;
+    struct ThroughInnovation {
+      const Filter* filter;
+      PlotDistance<Scalar> distance(const MeasVec& z) const {
+        const Innov in = filter->innovation(z);
+        return {in.d2, in.status};
+      }
+    };
     AssociationCandidates(Tracker& tracker, const Scan& scan, const EllipsoidalGate<Scalar, kMeasDim>& gate,
                           Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
                           bool (&drop)[kMaxTracks])
@@ -384,11 +416,11 @@ class Tracker {
   }
 
   /// Update track `slot` with measurement j; record the association.
-  void fold_in(std::size_t slot, const Scan& scan, std::size_t j, const Innov& in,
-               const EllipsoidalGate<Scalar, kMeasDim>& gate, bool (&used)[kMaxMeasurements],
-               bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+  void fold_in(std::size_t slot, const Scan& scan, std::size_t j, const EllipsoidalGate<Scalar, kMeasDim>& gate,
+               bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
     TrackT& tr = table_[slot];
+    const Innov in = tr.filter.innovation(scan.z[j]);  // before the update: the report and the manager read it
     if (const Status s = tr.filter.update(scan.z[j]); s != Status::kOk) {
       ++stats_.filter_failures;
       if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
