@@ -119,8 +119,8 @@ bool same_underwater_state(const Tracker& a, const Tracker& b) {
   const auto& db = fb.diagnostics();
   if (!same_bits(da.innovation, db.innovation) || !same_bits(da.innovation_variance, db.innovation_variance) ||
       !same_bits(da.test_ratio, db.test_ratio) || std::memcmp(&da.nis, &db.nis, sizeof(da.nis)) != 0 ||
-      da.present != db.present || da.gated_channel != db.gated_channel || da.gated_ellipsoid != db.gated_ellipsoid ||
-      da.fused != db.fused || da.state_changed != db.state_changed || da.status != db.status) {
+      da.present != db.present || da.rejected != db.rejected || da.fused_channels != db.fused_channels ||
+      da.fused != db.fused || da.status != db.status) {
     return false;
   }
   const UnderwaterCounters& ca = a.counters();

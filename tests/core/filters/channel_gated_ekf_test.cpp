@@ -127,7 +127,7 @@ SCENARIO("with every channel and no gate the channel-gated EKF is the EKF", "[cg
         // Same arithmetic in a different order (masked copies of H): 1e-12 relative.
         CHECK(max_rel(f.x(), e.x()) < 1e-12);
         CHECK(max_rel(f.P(), e.P()) < 1e-12);
-        CHECK(f.diagnostics().fused == Filter::kAllChannels);
+        CHECK(f.diagnostics().fused_channels == Filter::kAllChannels);
         CHECK(f.diagnostics().nis == Approx(e.diagnostics().nis).epsilon(1e-9));
       }
     }
@@ -152,7 +152,7 @@ SCENARIO("a subset update equals the update with only those channels", "[cgekf]"
         // few ulps of condition number ~1e4: 1e-9 relative.
         CHECK(max_rel(f.x(), xr) < 1e-9);
         CHECK(max_rel(f.P(), Pr) < 1e-9);
-        CHECK(f.diagnostics().fused == present);
+        CHECK(f.diagnostics().fused_channels == present);
         CHECK(f.diagnostics().present == present);
       }
     }
@@ -188,14 +188,14 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps the good arri
       REQUIRE(f.update_gated(z, Filter::kAllChannels, gate) == Status::kOk);
       const auto& d = f.diagnostics();
       THEN("only the outlier is gated, the seven others are fused") {
-        CHECK(d.gated_channel == (ChannelMask{1} << bad));
-        CHECK(d.fused == good);
+        CHECK(d.rejected == (ChannelMask{1} << bad));
+        CHECK(d.fused_channels == good);
         CHECK(d.test_ratio(bad) > 1.0);
         for (int i = 0; i < Toa::kMeasDim; ++i) {
           if (i != bad) CHECK(d.test_ratio(i) <= 1.0);
         }
         CHECK(d.innovation_variance(bad) > 0.0);
-        CHECK(d.state_changed);
+        CHECK(d.fused);
       }
       THEN("the update is the one without the outlier") {
         CHECK(max_rel(f.x(), xr) < 1e-9);
@@ -216,7 +216,7 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps the good arri
         const double e_ungated = (ungated.x().head<3>() - truth_state().head<3>()).norm();
         const double e_gated = (gated.x().head<3>() - truth_state().head<3>()).norm();
         CHECK(e_gated < e_ungated);
-        CHECK(ungated.diagnostics().fused == Filter::kAllChannels);
+        CHECK(ungated.diagnostics().fused_channels == Filter::kAllChannels);
       }
     }
     WHEN("only the ellipsoidal gate is on") {
@@ -226,8 +226,8 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps the good arri
       ell.ellipsoid_probability = kestrel::GateProbability::k99;
       REQUIRE(f.update_gated(z, Filter::kAllChannels, ell) == Status::kOk);
       THEN("it peels the outlier and fuses the rest") {
-        CHECK(f.diagnostics().gated_ellipsoid == (ChannelMask{1} << bad));
-        CHECK(f.diagnostics().fused == good);
+        CHECK(f.diagnostics().rejected == (ChannelMask{1} << bad));
+        CHECK(f.diagnostics().fused_channels == good);
         CHECK(max_rel(f.x(), xr) < 1e-9);
       }
     }
@@ -241,9 +241,9 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps the good arri
     WHEN("it updates through the gate") {
       REQUIRE(f.update_gated(z, Filter::kAllChannels, Filter::GateConfig{}) == Status::kOk);
       THEN("every channel is gated and the step is predict-only") {
-        CHECK(f.diagnostics().gated_channel == Filter::kAllChannels);
-        CHECK(f.diagnostics().fused == 0u);
-        CHECK_FALSE(f.diagnostics().state_changed);
+        CHECK(f.diagnostics().rejected == Filter::kAllChannels);
+        CHECK(f.diagnostics().fused_channels == 0u);
+        CHECK_FALSE(f.diagnostics().fused);
         CHECK(f.x() == x_before);
         CHECK(f.P() == P_before);
       }
@@ -255,7 +255,7 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps the good arri
     THEN("the update is predict-only") {
       REQUIRE(f.update_gated(Toa::Measurement::Zero(), 0, Filter::GateConfig{}) == Status::kOk);
       CHECK(f.x() == x_before);
-      CHECK_FALSE(f.diagnostics().state_changed);
+      CHECK_FALSE(f.diagnostics().fused);
     }
   }
 }
@@ -273,7 +273,7 @@ SCENARIO("the channel-gated EKF refuses bad input and keeps its state", "[cgekf]
       CHECK(f.x() == x_before);
       CHECK(f.P() == P_before);
       CHECK(f.diagnostics().status == Status::kNonFinite);
-      CHECK_FALSE(f.diagnostics().state_changed);
+      CHECK_FALSE(f.diagnostics().fused);
     }
   }
   GIVEN("a noise covariance that makes S indefinite") {

@@ -123,7 +123,7 @@ class Crpf {
     KESTREL_ASSERT(params.delta > Scalar(0));
     x_hat_ = State::Zero();
     P_ = Cov::Identity();
-    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
+    diag_ = Diagnostics{};
     for (int i = 0; i < kParticles; ++i) {
       xs_[0][i] = State::Zero();
       xs_[1][i] = State::Zero();
@@ -298,11 +298,7 @@ class Crpf {
     pending_dt_ = Scalar(0);
     predicted_ = false;
 
-    diag_.innovation = in.nu;
-    diag_.innovation_variance = in.S.diagonal();
-    diag_.nis = in.d2;
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(in.nu, in.S.diagonal(), in.d2);
     return Status::kOk;
   }
 

@@ -11,7 +11,9 @@
 // on every P before it is committed) returns kNotPositiveDefinite, and in
 // every case x and P are unchanged.
 // The explicit-Q / explicit-R overloads are what adaptive filters (R2-AEKF)
-// build on, so no adaptive filter copies this update.
+// build on, so no adaptive filter copies this update; update(z, R, keep)
+// fuses a subset of the channels (a channel gate's choice, paper 003) with
+// the same arithmetic.
 //
 // Two update forms, chosen at compile time (kForm; the default follows the
 // scalar). kBatch is the Cholesky of S above. kSequentialWhitened is the one
@@ -96,6 +98,7 @@ class Ekf {
   using MeasCov = typename Measurement::NoiseCov;
   using Jacobian = Mat<Scalar, kMeasDim, kStateDim>;
   static constexpr EkfUpdateForm kUpdateForm = kForm;
+  static constexpr ChannelMask kAllChannels = all_channels(kMeasDim);
   /// Model structure in use (structure.hpp). Floating-point scalars only:
   /// the fixed-point path keeps the dense arithmetic its golden hashes were
   /// recorded with (issue 8) until they are re-recorded deliberately.
@@ -109,7 +112,7 @@ class Ekf {
   Ekf() : Ekf(Motion{}, Measurement{}) {}
   Ekf(const Motion& motion, const Measurement& measurement)
       : motion_(motion), measurement_(measurement), x_(State::Zero()), P_(Cov::Identity()) {
-    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
+    diag_ = Diagnostics{};
   }
 
   /// Set the state and covariance.
@@ -295,6 +298,68 @@ class Ekf {
     }
   }
 
+  /// Update with only the channels in `keep` of z (bit i: channel i) and an
+  /// explicit R. Every other channel is removed, not zeroed: its row of H
+  /// and entry of nu are zero and its row and column of R, so of S, a unit
+  /// vector, so S is block-diagonal [S_kept, 0; 0, I] up to a permutation,
+  /// the gain has an exactly zero column for it and the update equals one
+  /// with the kept channels only (paper 003 drops gated channels this way;
+  /// filters/channel_gated_ekf.hpp). Channels outside `keep` are not read
+  /// (NaN allowed). The dense arithmetic of kForm (batch Joseph form, or
+  /// sequential whitened, where a removed channel is a no-op), whatever
+  /// structure the models expose.
+  /// @return kOk (an empty `keep` fuses nothing and changes nothing);
+  ///         kNonFinite or kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R, ChannelMask keep) {
+    diag_.fused = false;
+    diag_.fused_channels = 0;
+    keep &= kAllChannels;
+    if (keep == 0) {
+      diag_ = Diagnostics{};
+      diag_.status = Status::kOk;
+      return Status::kOk;
+    }
+    const KeptChannels k = kept_channels(z, R, keep);
+    if (k.status != Status::kOk) return fail(k.status);
+    Status s;
+    if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
+      s = fold_in_sequential(k.nu, k.H, k.R);
+    } else {
+      s = fold_in_batch(k.nu, k.H, k.R, k.S);
+    }
+    if (s == Status::kOk) {
+      diag_.present = keep;
+      diag_.fused_channels = keep;
+      for (int i = 0; i < kMeasDim; ++i) {
+        if (!has_channel(keep, i)) diag_.innovation_variance(i) = Scalar(0);  // the padding's 1
+      }
+    }
+    return s;
+  }
+
+  /// Innovation of the channels in `keep` of z with an explicit R, the
+  /// others removed as in update(z, R, keep) (nu_i 0, a unit row and column
+  /// of S), so d2 is over the kept channels. Pure.
+  Innov innovation(const MeasVec& z, const MeasCov& R, ChannelMask keep) const {
+    Innov out{MeasVec::Zero(), MeasCov::Identity(), Scalar(0), Status::kOk};
+    const KeptChannels k = kept_channels(z, R, keep & kAllChannels);
+    out.nu = k.nu;
+    out.S = k.S;
+    out.status = k.status;
+    if (k.status != Status::kOk) return out;
+    if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
+      if (!whitened_nis(k.H, k.nu, k.R, out.d2)) out.status = Status::kNotPositiveDefinite;
+    } else {
+      const Eigen::LLT<MeasCov> llt(k.S);
+      if (llt.info() != Eigen::Success) {
+        out.status = Status::kNotPositiveDefinite;
+        return out;
+      }
+      out.d2 = k.nu.dot(llt.solve(k.nu));
+    }
+    return out;
+  }
+
   /// Probabilistic data association update (Bar-Shalom and Tse, 1975; Bar-Shalom,
   /// Willett and Tian, Tracking and Data Fusion, 2011, section 3.4): the
   /// plots z[0..count) with association weights beta[j], and beta_none for
@@ -366,11 +431,7 @@ class Ekf {
     x_ = x;
     P_ = P;
     invalidate_linearisation();
-    diag_.innovation = nu_best;  // the plot of largest weight
-    diag_.innovation_variance = S.diagonal();
-    diag_.nis = nis_best;
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(nu_best, S.diagonal(), nis_best);
     return Status::kOk;
   }
 
@@ -382,10 +443,15 @@ class Ekf {
     if constexpr (kSparseUpdate) {
       return update_structured(z, R);
     }
-    const auto H = measurement_.jacobian(x_);
+    const Jacobian H = measurement_.jacobian(x_);
     const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
     const MeasCov S = symmetrised(H * P_ * H.transpose() + R);
     if (!all_finite(H) || !all_finite(nu) || !all_finite(S)) return fail(Status::kNonFinite);
+    return fold_in_batch(nu, H, R, S);
+  }
+
+  /// The batch update from nu, H, R and S = H P H^T + R (finite).
+  [[nodiscard]] Status fold_in_batch(const MeasVec& nu, const Jacobian& H, const MeasCov& R, const MeasCov& S) {
     const Eigen::LLT<MeasCov> llt(S);
     if (llt.info() != Eigen::Success) return fail(Status::kNotPositiveDefinite);
 
@@ -406,11 +472,7 @@ class Ekf {
     x_ = x;
     P_ = P;
     invalidate_linearisation();
-    diag_.innovation = nu;
-    diag_.innovation_variance = S.diagonal();
-    diag_.nis = nu.dot(llt.solve(nu));
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(nu, S.diagonal(), nu.dot(llt.solve(nu)));
     return Status::kOk;
   }
 
@@ -449,11 +511,7 @@ class Ekf {
     x_ = x;
     P_ = P;
     invalidate_linearisation();
-    diag_.innovation = nu;
-    diag_.innovation_variance = S.diagonal();
-    diag_.nis = w.squaredNorm();
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(nu, S.diagonal(), w.squaredNorm());
     return Status::kOk;
   }
 
@@ -464,6 +522,11 @@ class Ekf {
     const Jacobian H = measurement_.jacobian(x_);
     const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
     if (!all_finite(H) || !all_finite(nu)) return fail(Status::kNonFinite);
+    return fold_in_sequential(nu, H, R);
+  }
+
+  /// The sequential whitened update from nu, H and R (finite).
+  [[nodiscard]] Status fold_in_sequential(const MeasVec& nu, const Jacobian& H, const MeasCov& R) {
     Jacobian Hw = H;
     MeasVec nuw = nu;
     if (!whiten(R, Hw, nuw)) return fail(Status::kNotPositiveDefinite);
@@ -508,11 +571,7 @@ class Ekf {
     x_ = x;
     P_ = P;
     invalidate_linearisation();
-    diag_.innovation = nu;
-    diag_.innovation_variance = s_diag;
-    diag_.nis = nis;
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(nu, s_diag, nis);
     return Status::kOk;
   }
 
@@ -635,7 +694,52 @@ class Ekf {
     if constexpr (kSparseUpdate) lin_.valid = false;
   }
 
+  /// nu, H, R and S = H P H^T + R at the current state with every channel
+  /// outside `keep` removed (update(z, R, keep)); z is read on `keep` only.
+  struct KeptChannels {
+    MeasVec nu;
+    Jacobian H;
+    MeasCov R;
+    MeasCov S;
+    Status status;
+  };
+  KeptChannels kept_channels(const MeasVec& z, const MeasCov& R, ChannelMask keep) const {
+    KeptChannels k{MeasVec::Zero(), Jacobian::Zero(), MeasCov::Zero(), MeasCov::Identity(), Status::kOk};
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (has_channel(keep, i) && !ScalarTraits<Scalar>::is_finite(z(i))) {
+        k.status = Status::kNonFinite;
+        return k;
+      }
+    }
+    if (!all_finite(R)) {
+      k.status = Status::kNonFinite;
+      return k;
+    }
+    const Jacobian H = measurement_.jacobian(x_);
+    const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (!has_channel(keep, i)) {
+        k.R(i, i) = Scalar(1);
+        continue;
+      }
+      k.nu(i) = nu(i);
+      k.H.row(i) = H.row(i);
+      for (int j = 0; j < kMeasDim; ++j) {
+        if (has_channel(keep, j)) k.R(i, j) = R(i, j);
+      }
+    }
+    if (!all_finite(k.H) || !all_finite(k.nu)) {
+      k.status = Status::kNonFinite;
+      return k;
+    }
+    k.S = symmetrised(k.H * P_ * k.H.transpose() + k.R);
+    if (!all_finite(k.S)) k.status = Status::kNonFinite;
+    return k;
+  }
+
   Status fail(Status s) {
+    diag_.fused = false;
+    diag_.fused_channels = 0;
     diag_.status = s;
     return s;
   }

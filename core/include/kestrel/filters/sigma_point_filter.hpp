@@ -143,11 +143,7 @@ class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet
     if (Eigen::LLT<Cov>(P).info() != Eigen::Success) return fail(Status::kNotPositiveDefinite);
     x_ = x;
     P_ = P;
-    diag_.innovation = m.nu;
-    diag_.innovation_variance = m.S.diagonal();
-    diag_.nis = m.nu.dot(m.llt_S.solve(m.nu));
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(m.nu, m.S.diagonal(), m.nu.dot(m.llt_S.solve(m.nu)));
     return Status::kOk;
   }
 

@@ -53,7 +53,7 @@ class FilterParts {
  protected:
   FilterParts(const Motion& motion, const Measurement& measurement, const Params& params)
       : motion_(motion), measurement_(measurement), params_(params), w_(Weights::from(params)), x_(State::Zero()) {
-    diag_ = Diagnostics{MeasVec::Zero(), MeasVec::Zero(), Scalar(0), false, Status::kNotInitialised};
+    diag_ = Diagnostics{};
   }
 
   /// Record a refused update in the diagnostics and return its status.

@@ -148,11 +148,7 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
     if (down != Status::kOk) return fail(down);
     if (!all_finite(x)) return fail(Status::kNonFinite);
     commit(x, S);
-    diag_.innovation = m.nu;
-    diag_.innovation_variance = (m.Sy * m.Sy.transpose()).diagonal();
-    diag_.nis = solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm();
-    diag_.fused = true;
-    diag_.status = Status::kOk;
+    diag_.fused_all(m.nu, (m.Sy * m.Sy.transpose()).diagonal(), solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm());
     return Status::kOk;
   }
 

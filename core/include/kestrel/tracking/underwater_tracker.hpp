@@ -176,11 +176,11 @@ class UnderwaterTracker {
       if (s == Status::kOk) s = next.update_gated(z, present, config_.gate);
       if (s != Status::kOk) return refuse(s);
       const auto& d = next.diagnostics();
-      stats_.fused_mask = d.fused;
-      stats_.gated_mask = d.gated_channel | d.gated_ellipsoid;
-      stats_.fused = static_cast<std::uint8_t>(channel_count(d.fused));
+      stats_.fused_mask = d.fused_channels;
+      stats_.gated_mask = d.rejected;
+      stats_.fused = static_cast<std::uint8_t>(channel_count(d.fused_channels));
       stats_.gated_out = static_cast<std::uint8_t>(channel_count(stats_.gated_mask));
-      stats_.predict_only = d.fused == 0;
+      stats_.predict_only = d.fused_channels == 0;
       lost_frames = 0;
       const int arrivals = channel_count(present);
       if (arrivals >= static_cast<int>(config_.init.min_arrivals) && 2 * static_cast<int>(stats_.fused) <= arrivals) {
