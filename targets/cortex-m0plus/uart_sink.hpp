@@ -1,4 +1,4 @@
-// TrackSink of the Cortex-M0+ board: KTRK v1 records (targets/common) pushed
+// TrackSink of the Cortex-M0+ board: KTRK v2 records (targets/common) pushed
 // whole into the UART0 transmit ring, drained by the UART0 interrupt.
 #pragma once
 

@@ -22,7 +22,7 @@ inline constexpr std::uint32_t kUartBaud = 115'200;
 /// Receive ring (USART2 RX interrupt -> main loop). At 115200 baud about
 /// 11.5 bytes arrive per millisecond, so 1 KiB rides out an 88 ms step.
 inline constexpr std::size_t kRxRingBytes = 1024;
-/// Transmit ring (main loop -> USART2 TX interrupt): 18 track reports.
+/// Transmit ring (main loop -> USART2 TX interrupt): 16 KTRK v2 records of 64 bytes (18 of v1).
 inline constexpr std::size_t kTxRingBytes = 1024;
 /// Frame assembler's linear buffer: the largest frame the decoder accepts.
 inline constexpr std::size_t kAssemblerBytes = hal::wire::kMaxFrameBytes;

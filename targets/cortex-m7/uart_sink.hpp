@@ -1,4 +1,4 @@
-// TrackSink of the Cortex-M7 board: KTRK v1 records
+// TrackSink of the Cortex-M7 board: KTRK v2 records
 // (targets/common/include/kestrel/board/ktrk_record.hpp, the record every
 // board emits) pushed whole into the USART3 transmit ring, drained by the TX
 // interrupt. publish() never waits (kTableFull when the ring lacks room for

@@ -1,4 +1,4 @@
-// TrackSink of the riscv64-linux board: each report becomes one KTRK v1
+// TrackSink of the riscv64-linux board: each report becomes one KTRK v2
 // record (targets/common/include/kestrel/board/ktrk_record.hpp, the record
 // every board emits) in a fixed buffer of kSinkRecords records, written to a
 // file descriptor (a file, stdout, a pipe or the serial device) by flush(),

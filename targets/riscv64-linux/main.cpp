@@ -11,7 +11,7 @@
 //
 //   kestrel-rv64 [--baud N] [--clock-hz N] [--budget-report] INPUT [TRACKS_OUT]
 //     INPUT       stream file, '-' (stdin) or a tty such as /dev/ttyS1
-//     TRACKS_OUT  file for KTRK v1 records, '-' for stdout (default), or the
+//     TRACKS_OUT  file for KTRK v2 records, '-' for stdout (default), or the
 //                 same tty as INPUT (records go back over the link)
 //     --baud N    line rate when INPUT is a tty (default 115200)
 //     --clock-hz  rate of the rdtime/rdcycle clock when the system does not

@@ -1,43 +1,60 @@
-// KTRK v1: the binary track record every board's sink emits, so a consumer
+// KTRK v2: the binary track record every board's sink emits, so a consumer
 // reads the same bytes from a Cortex-M UART, a RISC-V Linux process or a
 // file (SPEC section 8: the same core and the same wire formats on every
 // board). Each track report becomes one fixed-size record; a record is never
 // split, so a consumer can always resynchronise on the magic.
 //
-// Binary rather than text: 56 bytes per track instead of ~120 characters,
+// Binary rather than text: 64 bytes per track instead of ~120 characters,
 // no number formatting code (printf is banned from the images), integer
 // fields in the same units as the wire frames, and a CRC-32 so the host
-// can tell a damaged record from a real jump. Layout, all little-endian:
+// can tell a damaged record from a real jump.
+//
+// v2 (issue 15) carries any state layout: a layout code says what the state
+// components mean, so a board bound to a bistatic (PCL) tracker emits the
+// same record as a radar board. v1 was Cartesian x/y only (56 bytes, fixed
+// x, y, vx, vy); no board writes it any more, tools/ktrk_decode.py still
+// reads it. Layout, all little-endian:
 //
 //   off size field
 //    0  u32  magic 'K' 'T' 'R' 'K' (0x4B52544B)
-//    4  u8   version (1)
+//    4  u8   version (2)
 //    5  u8   TrackStatus (1 tentative, 2 confirmed)
 //    6  u8   flags: bit 0 = associated in this frame
-//    7  u8   reserved, 0
+//    7  u8   state layout code (StateLayout below)
 //    8  u32  track_id
 //   12  i64  t_us, frame time, microseconds
-//   20  i32  x_mm       position x, millimetres (sensor frame)
-//   24  i32  y_mm       position y, millimetres
-//   28  i32  vx_mmps    velocity x, mm/s
-//   32  i32  vy_mmps    velocity y, mm/s
-//   36  u32  pos_sigma_mm  sqrt(var x + var y), millimetres
-//   40  u16  age, frames
-//   42  u16  hits
-//   44  u16  misses (consecutive)
-//   46  i16  measurement_index (-1: none)
-//   48  u16  nis_centi  NIS x 100 of this frame's association
-//   50  u16  reserved, 0
-//   52  u32  CRC-32 (hal/crc32.hpp) of bytes 0..51
+//   20  i32  c[0..5]  state components, x 1000 in the layout's SI units
+//                     (mm, mm/s, mm/s^2); those past the count are 0
+//   44  u32  sigma_milli  sqrt of the sum of the variances the layout names,
+//                         x 1000 (mm)
+//   48  u16  age, frames
+//   50  u16  hits
+//   52  u16  misses (consecutive)
+//   54  i16  measurement_index (-1: none)
+//   56  u16  nis_centi  NIS x 100 of this frame's association
+//   58  u8   component count (0..6)
+//   59  u8   reserved, 0
+//   60  u32  CRC-32 (hal/crc32.hpp) of bytes 0..59
 //
-// Scalars are converted to float, then rounded and saturated to the field
-// (float resolves 1 mm up to 16.7 km, and the fields are integers anyway);
-// NaN is written as the field's minimum (INT32_MIN, or the unsigned maximum
-// for unsigned fields). Written by the Cortex-M4F engineer for that board
-// (targets/cortex-m4f/uart_sink.hpp) and moved here unchanged so every board
-// shares one encoder. A fixed-point tracker (issue 8) is encoded with integer
-// arithmetic only, rounding half away from zero as the float path does; a
-// saturated value is written as the field's end of its sign.
+//   layout                  c[0..count-1]                        sigma of
+//   1 Cartesian 2-D CV      x_mm y_mm vx_mmps vy_mmps            x, y
+//   2 Cartesian 2-D CA      x_mm y_mm vx_mmps vy_mmps            x, y
+//                           ax_mmps2 ay_mmps2
+//   3 bistatic 1-D          rb_mm drb_mmps (Rb, dRb of PCL)      Rb
+//
+// The layout is chosen at compile time from the filter's named state layout
+// (Motion::Layout), so a tracker whose layout has no code here does not
+// compile; add a code and a row to tools/ktrk_decode.py. Six components fit
+// every 2-D layout with acceleration; the 3-D sonar state (7) needs a code
+// with a longer record.
+//
+// Scalars are rounded and saturated to the field in the tracker's own
+// precision (v1 went through float, which resolves 1 mm only up to 16.7 km:
+// too coarse for bistatic ranges of up to 200 km, and a double tracker
+// gains nothing from it); NaN is written as the field's minimum (INT32_MIN, or the unsigned maximum
+// for unsigned fields). A fixed-point tracker (issue 8) is encoded with
+// integer arithmetic only, rounding half away from zero as the float path
+// does; a saturated value is written as the field's end of its sign.
 #pragma once
 
 #include <cmath>
@@ -56,31 +73,42 @@ namespace kestrel::board {
 
 namespace report_record {
 inline constexpr std::uint32_t kMagic = 0x4B52544Bu;  ///< 'K' 'T' 'R' 'K' on the wire.
-inline constexpr std::uint8_t kVersion = 1;
-inline constexpr std::size_t kCrcOffset = 52;
-inline constexpr std::size_t kSize = 56;
+inline constexpr std::uint8_t kVersion = 2;
+inline constexpr std::size_t kMaxComponents = 6;
+inline constexpr std::size_t kComponentsOffset = 20;
+inline constexpr std::size_t kCrcOffset = 60;
+inline constexpr std::size_t kSize = 64;
 }  // namespace report_record
+
+/// What the state components of a record mean (byte 7).
+enum class StateLayout : std::uint8_t {
+  kCartesian2dCv = 1,  ///< x_mm, y_mm, vx_mmps, vy_mmps; sigma of x, y.
+  kCartesian2dCa = 2,  ///< as kCartesian2dCv, then ax_mmps2, ay_mmps2.
+  kBistatic1d = 3,     ///< rb_mm, drb_mmps (bistatic range and its rate); sigma of Rb.
+};
 
 namespace detail {
 
 /// round(v * scale), half away from zero, saturated to int32; NaN -> INT32_MIN.
-/// Plain float arithmetic (no libm rounding call).
-inline std::int32_t to_i32(float v, float scale) {
-  const float s = v * scale;
-  constexpr float kMax = 2147483520.0f;  // largest float below 2^31
-  if (!(s >= -kMax)) return INT32_MIN;   // below range, or NaN
+/// Plain arithmetic in F, the tracker's float or double (no libm rounding call).
+template <class F>
+std::int32_t to_i32(F v, F scale) {
+  const F s = v * scale;
+  // Largest F below 2^31: 2^31 - 128 in float, 2^31 - 1 in double.
+  constexpr F kMax = sizeof(F) == sizeof(float) ? F(2147483520.0) : F(2147483647.0);
+  if (!(s >= -kMax)) return INT32_MIN;  // below range, or NaN
   if (s > kMax) return INT32_MAX;
-  return static_cast<std::int32_t>(s + (s >= 0.0f ? 0.5f : -0.5f));
+  return static_cast<std::int32_t>(s + (s >= F(0) ? F(0.5) : F(-0.5)));
 }
 
 /// round(v * scale), half up, saturated to [0, max of U]; NaN -> max of U.
-template <class U>
-U to_unsigned(float v, float scale) {
+template <class U, class F>
+U to_unsigned(F v, F scale) {
   constexpr U kMax = static_cast<U>(~U{0});
-  const float s = v * scale;
-  if (s < 0.0f) return U{0};
-  if (!(s < static_cast<float>(kMax))) return kMax;  // at or above range, or NaN
-  return static_cast<U>(s + 0.5f);
+  const F s = v * scale;
+  if (s < F(0)) return U{0};
+  if (!(s < static_cast<F>(kMax))) return kMax;  // at or above range, or NaN
+  return static_cast<U>(s + F(0.5));
 }
 
 /// round(v * scale) of a fixed-point value, half away from zero, saturated to
@@ -98,9 +126,42 @@ std::int64_t fixed_to_int(Q v, std::uint32_t scale, std::int64_t lo, std::int64_
   return r < lo ? lo : (r > hi ? hi : r);
 }
 
+template <class L>
+concept BistaticLayout = requires { L::kRb; L::kDRb; };
+template <class L>
+concept Cartesian2dLayout = requires { L::kX; L::kY; L::kVx; L::kVy; } && !requires { L::kZ; };
+template <class L>
+concept Cartesian2dCaLayout = Cartesian2dLayout<L> && requires { L::kAx; L::kAy; };
+
+/// Which state entries a layout puts in the record, in record order, and
+/// whose variances sum to the sigma field.
+struct RecordState {
+  StateLayout code;
+  std::size_t count;
+  int index[report_record::kMaxComponents];
+  std::size_t sigma_count;
+  int sigma_index[2];
+};
+
+template <class L>
+constexpr RecordState record_state() {
+  if constexpr (BistaticLayout<L>) {
+    return {StateLayout::kBistatic1d, 2, {L::kRb, L::kDRb, 0, 0, 0, 0}, 1, {L::kRb, 0}};
+  } else if constexpr (Cartesian2dCaLayout<L>) {
+    return {StateLayout::kCartesian2dCa, 6, {L::kX, L::kY, L::kVx, L::kVy, L::kAx, L::kAy}, 2, {L::kX, L::kY}};
+  } else {
+    static_assert(Cartesian2dLayout<L>, "this state layout has no KTRK layout code: add one (ktrk_record.hpp)");
+    return {StateLayout::kCartesian2dCv, 4, {L::kX, L::kY, L::kVx, L::kVy, 0, 0}, 2, {L::kX, L::kY}};
+  }
+}
+
 }  // namespace detail
 
-/// Encode `r` as a KTRK v1 record into `out`.
+/// The KTRK layout code of a filter's state.
+template <class Filter>
+inline constexpr StateLayout kRecordLayout = detail::record_state<typename Filter::Layout>().code;
+
+/// Encode `r` as a KTRK v2 record into `out`.
 template <class Filter>
 void encode_track_record(const TrackReport<Filter>& r, std::span<std::uint8_t, report_record::kSize> out) {
   using Scalar = typename Filter::Scalar;
@@ -109,39 +170,46 @@ void encode_track_record(const TrackReport<Filter>& r, std::span<std::uint8_t, r
                 "the KTRK encoder takes a floating-point or fixed-point tracker");
   namespace w = hal::wire;
 
+  constexpr detail::RecordState kState = detail::record_state<L>();
+  static_assert(kState.count <= report_record::kMaxComponents);
+
   w::store_u32(out, 0, report_record::kMagic);
   w::store_u8(out, 4, report_record::kVersion);
   w::store_u8(out, 5, static_cast<std::uint8_t>(r.status));
   w::store_u8(out, 6, r.associated ? 1u : 0u);
-  w::store_u8(out, 7, 0);
+  w::store_u8(out, 7, static_cast<std::uint8_t>(kState.code));
   w::store_u32(out, 8, r.track_id);
   w::store_i64(out, 12, r.t_us);
-  if constexpr (ScalarTraits<Scalar>::kIsFixedPoint) {
-    const auto i32 = [](Scalar v) {
-      return static_cast<std::int32_t>(detail::fixed_to_int(v, 1000, INT32_MIN, INT32_MAX));
-    };
-    w::store_i32(out, 20, i32(r.x(L::kX)));
-    w::store_i32(out, 24, i32(r.x(L::kY)));
-    w::store_i32(out, 28, i32(r.x(L::kVx)));
-    w::store_i32(out, 32, i32(r.x(L::kVy)));
-    const Scalar pos_sigma = ScalarTraits<Scalar>::sqrt(r.P(L::kX, L::kX) + r.P(L::kY, L::kY));
-    w::store_u32(out, 36, static_cast<std::uint32_t>(detail::fixed_to_int(pos_sigma, 1000, 0, UINT32_MAX)));
-    w::store_u16(out, 48, static_cast<std::uint16_t>(detail::fixed_to_int(r.nis, 100, 0, UINT16_MAX)));
-  } else {
-    const auto f = [](Scalar v) { return static_cast<float>(v); };
-    w::store_i32(out, 20, detail::to_i32(f(r.x(L::kX)), 1000.0f));
-    w::store_i32(out, 24, detail::to_i32(f(r.x(L::kY)), 1000.0f));
-    w::store_i32(out, 28, detail::to_i32(f(r.x(L::kVx)), 1000.0f));
-    w::store_i32(out, 32, detail::to_i32(f(r.x(L::kVy)), 1000.0f));
-    const float pos_var = f(r.P(L::kX, L::kX)) + f(r.P(L::kY, L::kY));
-    w::store_u32(out, 36, detail::to_unsigned<std::uint32_t>(std::sqrt(pos_var), 1000.0f));
-    w::store_u16(out, 48, detail::to_unsigned<std::uint16_t>(f(r.nis), 100.0f));
+  for (std::size_t k = 0; k < report_record::kMaxComponents; ++k) {
+    std::int32_t c = 0;
+    if (k < kState.count) {
+      const Scalar v = r.x(kState.index[k]);
+      if constexpr (ScalarTraits<Scalar>::kIsFixedPoint) {
+        c = static_cast<std::int32_t>(detail::fixed_to_int(v, 1000, INT32_MIN, INT32_MAX));
+      } else {
+        c = detail::to_i32<Scalar>(v, Scalar(1000));
+      }
+    }
+    w::store_i32(out, report_record::kComponentsOffset + 4 * k, c);
   }
-  w::store_u16(out, 40, r.age);
-  w::store_u16(out, 42, r.hits);
-  w::store_u16(out, 44, r.misses);
-  w::store_i16(out, 46, r.measurement_index);
-  w::store_u16(out, 50, 0);
+  if constexpr (ScalarTraits<Scalar>::kIsFixedPoint) {
+    Scalar var = r.P(kState.sigma_index[0], kState.sigma_index[0]);
+    for (std::size_t k = 1; k < kState.sigma_count; ++k) var = var + r.P(kState.sigma_index[k], kState.sigma_index[k]);
+    const Scalar sigma = ScalarTraits<Scalar>::sqrt(var);
+    w::store_u32(out, 44, static_cast<std::uint32_t>(detail::fixed_to_int(sigma, 1000, 0, UINT32_MAX)));
+    w::store_u16(out, 56, static_cast<std::uint16_t>(detail::fixed_to_int(r.nis, 100, 0, UINT16_MAX)));
+  } else {
+    Scalar var = r.P(kState.sigma_index[0], kState.sigma_index[0]);
+    for (std::size_t k = 1; k < kState.sigma_count; ++k) var += r.P(kState.sigma_index[k], kState.sigma_index[k]);
+    w::store_u32(out, 44, detail::to_unsigned<std::uint32_t, Scalar>(std::sqrt(var), Scalar(1000)));
+    w::store_u16(out, 56, detail::to_unsigned<std::uint16_t, Scalar>(r.nis, Scalar(100)));
+  }
+  w::store_u16(out, 48, r.age);
+  w::store_u16(out, 50, r.hits);
+  w::store_u16(out, 52, r.misses);
+  w::store_i16(out, 54, r.measurement_index);
+  w::store_u8(out, 58, static_cast<std::uint8_t>(kState.count));
+  w::store_u8(out, 59, 0);
   const std::uint32_t crc = hal::crc32(std::span<const std::uint8_t>(out.data(), report_record::kCrcOffset));
   w::store_u32(out, report_record::kCrcOffset, crc);
 }
