@@ -1,40 +1,87 @@
 // The Cortex-M7 board's choice of a concrete type for every HAL concept
-// (STYLE "Top-level layout": board.hpp binds each concept), and the tracker
-// this board runs. Everything is resolved at compile time; the runner calls
-// these types directly, with no virtual dispatch.
+// (STYLE "Top-level layout": board.hpp binds each concept), and the sensor
+// chain (adapter + tracker) this board runs. Everything is resolved at
+// compile time; the runner calls these types directly, with no virtual
+// dispatch.
 //
 //   MeasurementFeed -> UartRingFeed  (USART3 RX ring -> FrameAssembler)
 //   CycleClock      -> DwtCycleClock (DWT CYCCNT at 400 MHz, extended to 64 bits)
-//   TrackSink       -> UartTxSink    (KTRK records -> USART3 TX ring)
-//   Tracker         -> EKF-CA radar tracker in double (FPv5-D16 does double
-//                      in hardware), kMaxTracks x kMaxPlots
+//   TrackSink       -> UartTxSink    (KTRK v2 records -> USART3 TX ring)
+//   Adapter/Tracker, by sensor kind (issue 15), in double (FPv5-D16 does
+//   double in hardware):
+//     radar (kestrel-m7.elf, the default)
+//                   -> RadarAdapter + EKF-CA radar tracker, kMaxTracks x kMaxPlots
+//     PCL   (kestrel-m7-pcl.elf, compiled with KESTREL_BOARD_SENSOR_PCL)
+//                   -> PclAdapter + PCL KF on [Rb, dRb], kPclMaxTracks x
+//                      kPclMaxCandidates, PCL-002 parameters
+// Both images are built from this folder (CMakeLists.txt); main.cpp only
+// calls make_tracker() and make_adapter(), so it is the same for both.
 #pragma once
 
 #include "board_config.hpp"
 #include "kestrel/board/dwt_cycle_clock.hpp"
 #include "kestrel/hal/clock.hpp"
 #include "kestrel/hal/feed.hpp"
-#include "kestrel/hal/radar_adapter.hpp"
 #include "kestrel/hal/runner.hpp"
 #include "kestrel/hal/sink.hpp"
-#include "kestrel/tracking/radar_tracker.hpp"
 #include "system.hpp"
 #include "uart_feed.hpp"
 #include "uart_sink.hpp"
+
+#if defined(KESTREL_BOARD_SENSOR_PCL)
+#include "kestrel/hal/pcl_adapter.hpp"
+#include "kestrel/tracking/pcl_tracker.hpp"
+#else
+#include "kestrel/hal/radar_adapter.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
+#endif
 
 namespace kestrel::m7 {
 
 using Feed = UartRingFeed;
 using Clock = board::DwtCycleClock<kCoreClockHz>;
 using Sink = UartTxSink;
+
+#if defined(KESTREL_BOARD_SENSOR_PCL)
+
+using Tracker = PclTracker<PclKf<double>, kPclMaxTracks, kPclMaxCandidates>;
+using Adapter = hal::PclAdapter<Tracker>;
+
+/// PCL-002's sensor and track management (core defaults); the adapter takes
+/// its carrier from the same parameters so Rb-rate conversion and the
+/// filter's wavelength agree.
+inline constexpr PclTrackerParams kPclParams{};
+
+inline Tracker make_tracker() {
+  return make_pcl_tracker<double, kPclMaxTracks, kPclMaxCandidates>(kPclParams);
+}
+/// The adapter reads the tracker's tracks to rank an over-capacity frame.
+inline Adapter make_adapter(const Tracker& tracker) {
+  return Adapter(&tracker, hal::PclAdapterConfig{kPclParams.carrier_hz});
+}
+
+static_assert(Tracker::Scan::kMaxMeasurements <= hal::kMaxPclCandidates,
+              "the scan should not be larger than a PCL frame can fill");
+
+#else
+
 using Tracker = RadarTracker<EkfCa<double>, kMaxTracks, kMaxPlots>;
 using Adapter = hal::RadarAdapter;
+
+inline Tracker make_tracker() {
+  return make_radar_tracker<double, kMaxTracks, kMaxPlots>(RadarTrackerParams{});
+}
+inline Adapter make_adapter(const Tracker&) { return Adapter{}; }
+
+static_assert(Tracker::Scan::kMaxMeasurements <= hal::kMaxRadarPlots,
+              "the scan should not be larger than a radar frame can fill");
+
+#endif
+
 using Runner = hal::Runner<Feed, Clock, Tracker, Adapter, Sink>;
 
 static_assert(hal::MeasurementFeed<Feed>);
 static_assert(hal::CycleClock<Clock>);
 static_assert(hal::TrackSink<Sink, Tracker::Report>);
-static_assert(Tracker::Scan::kMaxMeasurements <= hal::kMaxRadarPlots,
-              "the scan should not be larger than a radar frame can fill");
 
 }  // namespace kestrel::m7

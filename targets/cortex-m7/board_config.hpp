@@ -27,8 +27,17 @@ inline constexpr std::uint32_t kUartBaud = 115'200;
 /// Receive ring (USART3 RX interrupt -> main loop). At 115200 baud about
 /// 11.5 bytes arrive per millisecond, so 1 KiB rides out an 88 ms step.
 inline constexpr std::size_t kRxRingBytes = 1024;
-/// Transmit ring (main loop -> USART3 TX interrupt): 18 track reports.
+/// Transmit ring (main loop -> USART3 TX interrupt): 16 KTRK records of 64
+/// bytes, two frames of the radar image's 8 tracks. The PCL image's ring
+/// holds one full frame of its track table (kPclMaxTracks records); at
+/// 115200 baud about 90 records leave per 0.5 s frame, so a frame with more
+/// (mostly tentative) tracks than that drops the excess, counted in
+/// publish_failures.
+#if defined(KESTREL_BOARD_SENSOR_PCL)
+inline constexpr std::size_t kTxRingBytes = 8192;
+#else
 inline constexpr std::size_t kTxRingBytes = 1024;
+#endif
 /// Frame assembler's linear buffer: the largest frame the decoder accepts.
 inline constexpr std::size_t kAssemblerBytes = hal::wire::kMaxFrameBytes;
 
@@ -36,6 +45,12 @@ inline constexpr std::size_t kAssemblerBytes = hal::wire::kMaxFrameBytes;
 /// as the Cortex-M4F board, so the two images differ only in the scalar.
 inline constexpr std::size_t kMaxTracks = 8;
 inline constexpr std::size_t kMaxPlots = 32;
+
+/// Tracker capacities of the PCL image (kestrel-m7-pcl.elf: double KF on
+/// [Rb, dRb]): core's PCL-002 defaults, 32 candidates a frame and room for
+/// the tentative tracks about 22 clutter candidates a frame start.
+inline constexpr std::size_t kPclMaxTracks = 128;
+inline constexpr std::size_t kPclMaxCandidates = 32;
 
 /// A convert+step longer than this counts as an overrun: 10 ms (as on the
 /// M4F board), 2 % of the 0.5 s frame interval of SPEC section 9's radar

@@ -13,11 +13,12 @@ namespace {
 
 using namespace kestrel::m7;
 
-Tracker g_tracker = kestrel::make_radar_tracker<double, kMaxTracks, kMaxPlots>(kestrel::RadarTrackerParams{});
+// The sensor chain is board.hpp's (radar, or PCL in kestrel-m7-pcl.elf).
+Tracker g_tracker = make_tracker();
 Feed g_feed{usart3_rx_ring()};
 Clock g_clock{};
 Sink g_sink{usart3_tx_ring()};
-Runner g_runner{g_feed, g_clock, g_tracker, Adapter{}, g_sink, kStepBudgetCycles};
+Runner g_runner{g_feed, g_clock, g_tracker, make_adapter(g_tracker), g_sink, kStepBudgetCycles};
 
 }  // namespace
 
