@@ -1,11 +1,13 @@
 // Fixed-size Cholesky helpers: the rank-1 update/downdate matches a fresh
 // factorisation; a downdate that would lose positive definiteness returns a
 // status and leaves L unchanged; the semidefinite factor handles the
-// singular DWNA Q; the Householder triangularisation of a compound matrix
+// singular DWNA Q and keeps a small channel of a matrix in mixed units;
+// the Householder triangularisation of a compound matrix
 // gives chol(A A^T); none of them touches the heap.
 #include <catch2/catch.hpp>
 
 #include <Eigen/Dense>
+#include <cmath>
 
 #include "kestrel/math/cholesky_update.hpp"
 #include "kestrel/math/prng.hpp"
@@ -151,6 +153,40 @@ SCENARIO("the semidefinite factor gives a square root of the singular DWNA Q", "
     THEN("kNotPositiveDefinite and the output untouched") {
       CHECK(kestrel::cholesky_semidefinite<double, 4>(A, L) == Status::kNotPositiveDefinite);
       CHECK(L == Eigen::Matrix4d::Constant(3.0));
+    }
+  }
+}
+
+SCENARIO("the semidefinite factor keeps a small channel of a matrix in mixed units", "[math][cholupdate]") {
+  GIVEN("the polar radar's R in float: 9 m^2 and (0.3 deg)^2 = 2.74e-5 rad^2") {
+    // 2.74e-5 is below 32 eps_float * 9 = 3.4e-5, the zero-pivot tolerance
+    // a largest-diagonal rule gives: that rule dropped the bearing channel.
+    const float sb = 0.3f * 3.14159265f / 180.0f;
+    Eigen::Matrix2f R = Eigen::Matrix2f::Zero();
+    R(0, 0) = 9.0f;
+    R(1, 1) = sb * sb;
+    Eigen::Matrix2f L;
+    REQUIRE(kestrel::cholesky_semidefinite<float, 2>(R, L) == Status::kOk);
+    THEN("L is the exact diagonal square root") {
+      // A diagonal A has no round-off in d_j: sqrt is correctly rounded.
+      CHECK(L(0, 0) == 3.0f);
+      CHECK(L(1, 1) == std::sqrt(sb * sb));
+    }
+  }
+  GIVEN("the DWNA Q of CV-2D in float with its velocity rows in km/s (D Q D)") {
+    kestrel::ConstantVelocity2D<float> cv;
+    cv.sa = 2.0f;
+    Eigen::Matrix4f D = Eigen::Matrix4f::Identity();
+    D(1, 1) = 1e-3f;
+    D(3, 3) = 1e-3f;
+    const Eigen::Matrix4f Q = D * cv.process_noise(0.5f) * D;
+    Eigen::Matrix4f L;
+    REQUIRE(kestrel::cholesky_semidefinite<float, 4>(Q, L) == Status::kOk);
+    THEN("the velocity columns are still exact zeros and L L^T = Q") {
+      CHECK(L.col(1).isZero(0.0f));
+      CHECK(L.col(3).isZero(0.0f));
+      // float round-off of a 4 x 4 product, relative to Q's norm.
+      CHECK((L * L.transpose() - Q).norm() <= 1e-6f * Q.norm());
     }
   }
 }

@@ -94,26 +94,35 @@ template <class S, int kN, int kM>
 }
 
 /// Lower-triangular L with A = L L^T for a symmetric positive semi-definite A
-/// (reads the lower triangle). A pivot d_j <= tol is treated as an exact zero
-/// and its column set to 0, with tol = 16 * kTolN * eps * max_i A_ii
-/// (round-off of a rank-deficient matrix such as the DWNA Q; kTolN = n by
-/// default); a pivot below -tol means A is indefinite. A diagonal block of a
+/// (reads the lower triangle). A pivot d_j <= tol_j is treated as an exact
+/// zero and its column set to 0, with tol_j = 16 * kTolN * eps *
+/// (|A_jj| + sum_k L_jk^2), the scale of d_j's round-off (a rank-deficient
+/// matrix such as the DWNA Q; kTolN = n by default; a diagonal scaling of A,
+/// such as a change of units, does not change which pivots are zero); a
+/// pivot below -tol_j means A is indefinite. A diagonal block of a
 /// larger block-diagonal matrix passes that matrix's size as kTolN, so its
 /// factor is exactly the corresponding block of the larger factor.
 /// @return kOk; kNotPositiveDefinite (indefinite A; L unchanged); kNonFinite.
 template <class S, int kN, int kTolN = kN>
 [[nodiscard]] Status cholesky_semidefinite(const Mat<S, kN, kN>& A, Mat<S, kN, kN>& L) {
   using T = ScalarTraits<S>;
-  S max_diag = S(0);
   for (int i = 0; i < kN; ++i) {
     if (!T::is_finite(A(i, i))) return Status::kNonFinite;
-    if (A(i, i) > max_diag) max_diag = A(i, i);
   }
-  const S tol = S(16 * kTolN) * Eigen::NumTraits<S>::epsilon() * max_diag;
+  const S rel_tol = S(16 * kTolN) * Eigen::NumTraits<S>::epsilon();
   Mat<S, kN, kN> out = Mat<S, kN, kN>::Zero();
   for (int j = 0; j < kN; ++j) {
     S d = A(j, j);
-    for (int k = 0; k < j; ++k) d -= out(j, k) * out(j, k);
+    S mag = A(j, j) < S(0) ? -A(j, j) : A(j, j);
+    for (int k = 0; k < j; ++k) {
+      d -= out(j, k) * out(j, k);
+      mag += out(j, k) * out(j, k);
+    }
+    // The round-off of d is relative to the terms that form it, not to the
+    // largest diagonal: a tolerance on max_i A_ii zeroes a small channel of
+    // a matrix in mixed units (R of the polar radar in float: 2.7e-5 rad^2
+    // next to 9 m^2 is below 32 eps * 9).
+    const S tol = rel_tol * mag;
     if (!T::is_finite(d)) return Status::kNonFinite;
     if (d < -tol) return Status::kNotPositiveDefinite;
     if (!(d > tol)) continue;  // semidefinite direction: column stays zero
