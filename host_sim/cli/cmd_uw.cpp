@@ -48,6 +48,8 @@ UnderwaterTrackerParams params_from(const UwOptions& o, const UwScenarioConfig& 
   if (o.accel_sigma_mps2) p.accel_sigma_mps2 = *o.accel_sigma_mps2;
   if (o.sound_speed_sigma) p.sound_speed_sigma_mps_per_sqrt_s = *o.sound_speed_sigma;
   if (o.reacquire_after) p.reacquire_after_lost_frames = static_cast<std::uint16_t>(*o.reacquire_after);
+  if (o.no_gate_truncation) p.gate_truncation_covariance = false;
+  if (o.no_depth_projection) p.project_depth = false;
   return p;
 }
 
@@ -199,7 +201,9 @@ CLI::App* add_uw_command(CLI::App& app, UwOptions& o) {
   cmd->add_flag("--ellipsoidal", o.ellipsoidal, "Ellipsoidal gate on (after the per-channel gate)");
   cmd->add_option("--ellipsoid-p", o.ellipsoid_probability, "Its probability (default 0.99)");
   cmd->add_option("--accel-sigma", o.accel_sigma_mps2, "White acceleration per axis, m/s^2 (default 0.05)");
-  cmd->add_option("--sound-speed-sigma", o.sound_speed_sigma, "c random walk, m/s per sqrt(s) (default 0.1)");
+  cmd->add_option("--sound-speed-sigma", o.sound_speed_sigma, "c random walk, m/s per sqrt(s) (default 0.3)");
+  cmd->add_flag("--no-gate-truncation", o.no_gate_truncation, "Do not widen P for channels the per-channel gate dropped");
+  cmd->add_flag("--no-depth-projection", o.no_depth_projection, "Do not keep the depth estimate within (0, D)");
   cmd->add_option("--reacquire-after", o.reacquire_after, "Re-run the fix after this many frames in a row that fused at most half their arrivals (0: never)");
   return cmd;
 }

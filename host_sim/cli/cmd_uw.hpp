@@ -36,6 +36,8 @@ struct UwOptions {
   std::optional<double> accel_sigma_mps2;
   std::optional<double> sound_speed_sigma;      ///< m/s per sqrt(s).
   std::optional<unsigned> reacquire_after;      ///< 0 = never.
+  bool no_gate_truncation = false;              ///< Tracker without the gate-truncation covariance.
+  bool no_depth_projection = false;             ///< Tracker without the depth projection.
 };
 
 /// Register the subcommand and its options on `app`.

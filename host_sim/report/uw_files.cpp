@@ -134,7 +134,9 @@ nlohmann::json uw_params_json(const UnderwaterTrackerParams& p) {
           {"gate_k_sigma", p.gate_k_sigma},
           {"ellipsoidal_gate", p.ellipsoidal_gate},
           {"reject_sigma", p.reject_sigma},
-          {"reacquire_after_lost_frames", p.reacquire_after_lost_frames}};
+          {"reacquire_after_lost_frames", p.reacquire_after_lost_frames},
+          {"gate_truncation_covariance", p.gate_truncation_covariance},
+          {"project_depth", p.project_depth}};
 }
 
 nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrackerParams& params,

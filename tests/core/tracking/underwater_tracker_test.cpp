@@ -141,16 +141,57 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
         CHECK(tr.reports()[0].gated_out == 1);
       }
       THEN("the estimate is exactly that of a twin fed the frame without the outlier") {
-        Tracker twin = kestrel::make_underwater_tracker<double, 4>(uw_params());
-        for (int k = 0; k < 10; ++k) REQUIRE(twin.step(frame_at(k)) == Status::kOk);
+        // With the gate-truncation covariance off the gated channel is simply
+        // removed; with it (the default) x is the same and P gains the term
+        // of the next THEN.
+        auto p = uw_params();
+        p.gate_truncation_covariance = false;
+        Tracker plain = kestrel::make_underwater_tracker<double, 4>(p);
+        Tracker twin = kestrel::make_underwater_tracker<double, 4>(p);
+        for (int k = 0; k < 10; ++k) {
+          REQUIRE(plain.step(frame_at(k)) == Status::kOk);
+          REQUIRE(twin.step(frame_at(k)) == Status::kOk);
+        }
+        Scan s10 = frame_at(10);
+        s10.arrivals[arrival_index(3, ArrivalPath::kReflected)].toa_s += 25e-3;
+        REQUIRE(plain.step(s10) == Status::kOk);
         Scan clean = frame_at(10);
         clean.arrivals[arrival_index(3, ArrivalPath::kReflected)] = clean.arrivals[clean.count - 1];
         clean.count -= 1;  // beacon 3 reflected is the last arrival: drop it
         REQUIRE(twin.step(clean) == Status::kOk);
         REQUIRE(twin.last_step().fused == 7);
         // Removed, not zeroed: same arithmetic up to the padding of S (1e-12).
+        CHECK((plain.filter().x() - twin.filter().x()).cwiseAbs().maxCoeff() < 1e-9);
+        CHECK((plain.filter().P() - twin.filter().P()).cwiseAbs().maxCoeff() < 1e-9);
         CHECK((tr.filter().x() - twin.filter().x()).cwiseAbs().maxCoeff() < 1e-9);
-        CHECK((tr.filter().P() - twin.filter().P()).cwiseAbs().maxCoeff() < 1e-9);
+      }
+      THEN("P gains the spread of a good arrival beyond the gate along that channel's direction") {
+        // Without outliers so far (1 gated of 88 arrivals) a gated arrival is
+        // taken as good: weight 1, excess E[u^2 | |u| > 2] - 1 = 2 k phi(k) / erfc(k / sqrt 2).
+        auto p = uw_params();
+        p.gate_truncation_covariance = false;
+        Tracker plain = kestrel::make_underwater_tracker<double, 4>(p);
+        Tracker dflt = kestrel::make_underwater_tracker<double, 4>(uw_params());
+        for (int k = 0; k < 10; ++k) {
+          REQUIRE(plain.step(frame_at(k)) == Status::kOk);
+          REQUIRE(dflt.step(frame_at(k)) == Status::kOk);
+        }
+        CHECK(plain.filter().P() == dflt.filter().P());  // nothing gated before frame 10: identical
+        const Tracker::State x_pred = plain.filter().motion().propagate(plain.filter().x(), 1.0);
+        Scan s10 = frame_at(10);
+        s10.arrivals[arrival_index(3, ArrivalPath::kReflected)].toa_s += 25e-3;
+        REQUIRE(plain.step(s10) == Status::kOk);
+        const double kk = 2.0;
+        const double excess = 2.0 * kk * std::exp(-0.5 * kk * kk) / std::sqrt(2.0 * 3.14159265358979323846) / std::erfc(kk / std::sqrt(2.0));
+        CHECK(excess == Approx(4.746).margin(1e-3));
+        const Eigen::Matrix<double, 1, 7> h = plain.filter().measurement().jacobian(x_pred).row(bad);
+        const Tracker::Cov& P = plain.filter().P();
+        const Tracker::State g = P * h.transpose();
+        const double s_i = h.dot(g) + 3e-3 * 3e-3;
+        const Tracker::Cov expected = P + (excess / s_i) * (g * g.transpose());
+        CHECK((tr.filter().P() - expected).cwiseAbs().maxCoeff() < 1e-9 * expected.cwiseAbs().maxCoeff());
+        CHECK(tr.filter().P()(L::kZ, L::kZ) > P(L::kZ, L::kZ));
+        CHECK(tr.filter().x() == plain.filter().x());
       }
     }
     WHEN("the gate is off and frame 10 carries the same outlier") {
