@@ -195,7 +195,7 @@ class UnderwaterTracker {
       Status s = next.predict(dt);
       const State x_pred = next.x();
       if (s == Status::kOk) s = next.update_gated(z, present, config_.gate);
-      if (s == Status::kOk && config_.gate_truncation_covariance && next.diagnostics().gated_channel != 0) {
+      if (s == Status::kOk && config_.gate_truncation_covariance && dropped_by_channel_gate(next) != 0) {
         s = add_gate_truncation(next, x_pred, channel_count(present));
       }
       if (s != Status::kOk) return refuse(s);
@@ -336,8 +336,19 @@ class UnderwaterTracker {
   /// nothing about the sign). The kept channels need no correction: the
   /// update conditions on their values. Only channels dropped by the
   /// per-channel gate count; the ellipsoidal gate's are left as they are.
+  /// The channels the per-channel gate dropped in the last update (its
+  /// test ratio over 1), not those the ellipsoidal gate peeled.
+  static ChannelMask dropped_by_channel_gate(const Filter& f) {
+    const auto& d = f.diagnostics();
+    ChannelMask m = 0;
+    for (int i = 0; i < Filter::kMeasDim; ++i) {
+      if (has_channel(d.rejected, i) && d.test_ratio(i) > Scalar(1)) m = with_channel(m, i);
+    }
+    return m;
+  }
+
   Status add_gate_truncation(Filter& f, const State& x_pred, int arrivals_now) const {
-    const ChannelMask gated = f.diagnostics().gated_channel;
+    const ChannelMask gated = dropped_by_channel_gate(f);
     const auto H = f.measurement().jacobian(x_pred);
     const auto R = f.measurement().noise();
     // Running totals including this frame (counters_ moves at the commit).
