@@ -40,6 +40,7 @@ struct TableCandidates {
   kestrel::PlotDistance<double> distance(std::size_t k, std::size_t j) const { return {d2[k][j], Status::kOk}; }
   bool gated(const kestrel::PlotDistance<double>& d) const { return d.status == Status::kOk && d.d2 <= threshold; }
   double gate_threshold() const { return threshold; }
+  void assign(std::size_t k, std::size_t j, const kestrel::PlotDistance<double>&) { assign(k, j); }
   void assign(std::size_t k, std::size_t j) {
     REQUIRE_FALSE(used[j]);
     REQUIRE(assigned[k] == -1);

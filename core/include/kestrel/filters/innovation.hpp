@@ -13,10 +13,10 @@ namespace kestrel {
 template <class Scalar, int kMeasDim>
 struct Innovation {
   static constexpr int kDim = kMeasDim;
-  Vec<Scalar, kMeasDim> nu;           ///< z - h(x_pred), angles wrapped.
-  Mat<Scalar, kMeasDim, kMeasDim> S;  ///< Innovation covariance H P H^T + R.
-  Scalar d2;                          ///< nu^T S^-1 nu (NIS), unitless.
-  Status status;                      ///< kOk, kNonFinite or kNotPositiveDefinite.
+  Vec<Scalar, kMeasDim> nu = Vec<Scalar, kMeasDim>::Zero();                 ///< z - h(x_pred), angles wrapped.
+  Mat<Scalar, kMeasDim, kMeasDim> S = Mat<Scalar, kMeasDim, kMeasDim>::Zero();  ///< Innovation covariance H P H^T + R.
+  Scalar d2{};                                     ///< nu^T S^-1 nu (NIS), unitless.
+  Status status = Status::kNotInitialised;         ///< kOk, kNonFinite or kNotPositiveDefinite.
 };
 
 /// The normalised distance of one plot from a track's predicted measurement:

@@ -45,6 +45,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 
 #include "kestrel/association/chi_square.hpp"
 #include "kestrel/association/gate.hpp"
@@ -200,8 +201,9 @@ class Tracker {
     }
     /// The normalised distance of measurement j from a track (track(k)):
     /// the per-pair work of every associator.
+    /// (PlotDistance, or the whole Innovation where that is what it cost.)
     template <class TrackSide>
-    PlotDistance<Scalar> distance(const TrackSide& track, std::size_t j) const {
+    auto distance(const TrackSide& track, std::size_t j) const {
       return track.distance(scan_.z[j]);
     }
     /// The innovation of measurement j against track k (pure).
@@ -216,7 +218,21 @@ class Tracker {
     Scalar gate_probability() const { return gate_probability_; }
     /// Update track k with measurement j. On success j is used and k is
     /// hit; if the filter refuses, both stay open.
-    void assign(std::size_t k, std::size_t j) { tracker_.fold_in(slot_[k], scan_, j, gate_, used_, hit_, drop_); }
+    void assign(std::size_t k, std::size_t j) {
+      tracker_.fold_in(slot_[k], scan_, j, tracker_.table_[slot_[k]].filter.innovation(scan_.z[j]), gate_, used_,
+                       hit_, drop_);
+    }
+    /// The same with `d` = distance(track(k), j): an innovation (a filter
+    /// gated through innovation()) is used as is; a PlotDistance costs one
+    /// innovation on the filter's shared linearisation.
+    template <class Distance>
+    void assign(std::size_t k, std::size_t j, const Distance& d) {
+      if constexpr (std::is_same_v<Distance, Innov>) {
+        tracker_.fold_in(slot_[k], scan_, j, d, gate_, used_, hit_, drop_);
+      } else {
+        assign(k, j);
+      }
+    }
     /// Update track k with the measurements index[0..n) weighted by
     /// beta[0..n), beta_none for none of them (probabilistic association;
     /// the filter needs update_pda). On success all n are used.
@@ -231,10 +247,7 @@ class Tracker {
     friend class Tracker;
     struct ThroughInnovation {
       const Filter* filter;
-      PlotDistance<Scalar> distance(const MeasVec& z) const {
-        const Innov in = filter->innovation(z);
-        return {in.d2, in.status};
-      }
+      Innov distance(const MeasVec& z) const { return filter->innovation(z); }
     };
     AssociationCandidates(Tracker& tracker, const Scan& scan, const EllipsoidalGate<Scalar, kMeasDim>& gate,
                           Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
@@ -416,11 +429,12 @@ class Tracker {
   }
 
   /// Update track `slot` with measurement j; record the association.
-  void fold_in(std::size_t slot, const Scan& scan, std::size_t j, const EllipsoidalGate<Scalar, kMeasDim>& gate,
-               bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+  /// `in`: its innovation before the update (the report and the manager read it).
+  void fold_in(std::size_t slot, const Scan& scan, std::size_t j, const Innov& in,
+               const EllipsoidalGate<Scalar, kMeasDim>& gate, bool (&used)[kMaxMeasurements],
+               bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
     TrackT& tr = table_[slot];
-    const Innov in = tr.filter.innovation(scan.z[j]);  // before the update: the report and the manager read it
     if (const Status s = tr.filter.update(scan.z[j]); s != Status::kOk) {
       ++stats_.filter_failures;
       if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
