@@ -25,6 +25,10 @@ void check_against_model(std::uint32_t seed) {
   for (int op = 0; op < 3000; ++op) {
     if (rng() % 5 < 3) {
       const std::size_t slot = table.allocate(Item{});
+      // The lowest free slot, or kCapacity when full (found in the mask words).
+      std::size_t lowest = 0;
+      while (model.count(lowest) != 0) ++lowest;
+      REQUIRE(slot == lowest);
       if (slot < kCapacity) model.insert(slot);
     } else if (!model.empty()) {
       auto it = model.begin();

@@ -29,20 +29,27 @@ class TrackTable {
  private:
   static constexpr std::size_t kWords = (kCapacity + 63) / 64;
   static constexpr std::uint64_t bit(std::size_t i) { return std::uint64_t{1} << (i % 64); }
+  /// The bits of word w that are slots (all but in a last, partial word).
+  static constexpr std::uint64_t slots_in_word(std::size_t w) {
+    return (w + 1 < kWords || kCapacity % 64 == 0) ? ~std::uint64_t{0} : (std::uint64_t{1} << (kCapacity % 64)) - 1u;
+  }
 
  public:
   /// Take a free slot for a new tentative track with the next id.
   /// @return the slot index, or kCapacity when the table is full.
+  /// The lowest free slot, found in the occupancy words (a full table costs
+  /// kWords tests, not kCapacity).
   std::size_t allocate(const TrackT& prototype) {
-    for (std::size_t i = 0; i < kCapacity; ++i) {
-      if (slots_[i].status == TrackStatus::kFree) {
-        slots_[i] = prototype;
-        slots_[i].status = TrackStatus::kTentative;
-        slots_[i].id = next_id_;
-        next_id_ = next_id_ == UINT32_MAX ? 1u : next_id_ + 1u;
-        mask_[i / 64] |= bit(i);
-        return i;
-      }
+    for (std::size_t w = 0; w < kWords; ++w) {
+      const std::uint64_t free = ~mask_[w] & slots_in_word(w);
+      if (free == 0) continue;
+      const std::size_t i = w * 64 + static_cast<std::size_t>(std::countr_zero(free));
+      slots_[i] = prototype;
+      slots_[i].status = TrackStatus::kTentative;
+      slots_[i].id = next_id_;
+      next_id_ = next_id_ == UINT32_MAX ? 1u : next_id_ + 1u;
+      mask_[w] |= bit(i);
+      return i;
     }
     return kCapacity;
   }
