@@ -321,6 +321,17 @@ class UnderwaterTracker {
     return config_.resync_frames > 0 && off_clock_count_ >= config_.resync_frames;
   }
 
+  /// The channels the per-channel gate dropped in the last update (its
+  /// test ratio over 1), not those the ellipsoidal gate peeled.
+  static ChannelMask dropped_by_channel_gate(const Filter& f) {
+    const auto& d = f.diagnostics();
+    ChannelMask m = 0;
+    for (int i = 0; i < Filter::kMeasDim; ++i) {
+      if (has_channel(d.rejected, i) && d.test_ratio(i) > Scalar(1)) m = with_channel(m, i);
+    }
+    return m;
+  }
+
   /// The per-channel gate drops channel i when |nu_i| > k sqrt(S_ii) and the
   /// update then treats it as never received. But had the arrival been a
   /// good one, the truth lies where channel i's innovation is beyond k sigma:
@@ -336,17 +347,6 @@ class UnderwaterTracker {
   /// nothing about the sign). The kept channels need no correction: the
   /// update conditions on their values. Only channels dropped by the
   /// per-channel gate count; the ellipsoidal gate's are left as they are.
-  /// The channels the per-channel gate dropped in the last update (its
-  /// test ratio over 1), not those the ellipsoidal gate peeled.
-  static ChannelMask dropped_by_channel_gate(const Filter& f) {
-    const auto& d = f.diagnostics();
-    ChannelMask m = 0;
-    for (int i = 0; i < Filter::kMeasDim; ++i) {
-      if (has_channel(d.rejected, i) && d.test_ratio(i) > Scalar(1)) m = with_channel(m, i);
-    }
-    return m;
-  }
-
   Status add_gate_truncation(Filter& f, const State& x_pred, int arrivals_now) const {
     const ChannelMask gated = dropped_by_channel_gate(f);
     const auto H = f.measurement().jacobian(x_pred);
