@@ -112,8 +112,15 @@ SCENARIO("a producer thread and a consumer thread pass bytes in order", "[hal][r
     constexpr std::size_t kBytes = 200000;
     WHEN("the producer pushes a counting sequence, retrying when full") {
       std::thread producer([&ring] {
+        // Yield when full (and the consumer when empty): on a loaded 2-core
+        // machine a spinning thread can hold the core its peer needs for
+        // a whole time slice; yielding keeps the interleaving and frees it.
         for (std::size_t i = 0; i < kBytes;) {
-          if (ring.size() < ring.capacity() && ring.push(static_cast<std::uint8_t>(i * 7))) ++i;
+          if (ring.size() < ring.capacity() && ring.push(static_cast<std::uint8_t>(i * 7))) {
+            ++i;
+          } else {
+            std::this_thread::yield();
+          }
         }
       });
       std::vector<std::uint8_t> received;
@@ -121,6 +128,7 @@ SCENARIO("a producer thread and a consumer thread pass bytes in order", "[hal][r
       std::array<std::uint8_t, 13> chunk{};
       while (received.size() < kBytes) {
         const std::size_t n = ring.pop(chunk);
+        if (n == 0) std::this_thread::yield();
         received.insert(received.end(), chunk.begin(), chunk.begin() + static_cast<std::ptrdiff_t>(n));
       }
       producer.join();
