@@ -333,11 +333,15 @@ SCENARIO("an associated track reports its innovation, variance and test ratio", 
   }
   REQUIRE(f.predict(0.5) == Status::kOk);
   const auto in = f.innovation(z);
-  CHECK(r.innovation(0) == Approx(in.nu(0)));
-  CHECK(r.innovation(1) == Approx(in.nu(1)));
-  CHECK(r.innovation_variance(0) == Approx(in.S(0, 0)));
-  CHECK(r.innovation_variance(1) == Approx(in.S(1, 1)));
+  CHECK(r.fusion.innovation(0) == Approx(in.nu(0)));
+  CHECK(r.fusion.innovation(1) == Approx(in.nu(1)));
+  CHECK(r.fusion.innovation_variance(0) == Approx(in.S(0, 0)));
+  CHECK(r.fusion.innovation_variance(1) == Approx(in.S(1, 1)));
+  CHECK(r.fusion.nis == Approx(in.d2));
   CHECK(r.nis == Approx(in.d2));
+  CHECK(r.fusion.fused);
+  CHECK(r.fusion.fused_channels == 0b11u);
+  CHECK(r.fusion.rejected == 0u);
   // Gate 0.99 for 2 dimensions: chi2 quantile 9.210.
   CHECK(r.test_ratio == Approx(in.d2 / 9.210));
   CHECK(r.test_ratio < 1.0);

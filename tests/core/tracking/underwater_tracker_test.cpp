@@ -138,7 +138,9 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
         CHECK(tr.counters().gated_out == 1);
         CHECK(tr.filter().diagnostics().test_ratio(bad) > 1.0);
         CHECK(tr.reports().size() == 1);
-        CHECK(tr.reports()[0].gated_out == 1);
+        CHECK(tr.reports()[0].fusion.rejected == (ChannelMask{1} << bad));
+        CHECK(tr.reports()[0].fusion.fused_channels == (tr.last_step().present & ~(ChannelMask{1} << bad)));
+        CHECK(tr.reports()[0].associated);
       }
       THEN("the estimate is exactly that of a twin fed the frame without the outlier") {
         // With the gate-truncation covariance off the gated channel is simply

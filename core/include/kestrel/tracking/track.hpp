@@ -1,10 +1,12 @@
-// One track of the table and the report the tracker publishes for it
-// (SPEC section 7: stable id, status, age, hit/miss counters and the last
-// innovation statistics).
+// One track of the table and the report every tracker publishes for it,
+// whatever the sensor kind (SPEC section 7: stable id, status, age, hit/miss
+// counters and the last innovation statistics, per channel in the one
+// diagnostics record FusionDiagnostics).
 #pragma once
 
 #include <cstdint>
 
+#include "kestrel/filters/innovation.hpp"
 #include "kestrel/tracking/track_table.hpp"
 
 namespace kestrel {
@@ -33,10 +35,8 @@ struct Track {
   std::uint8_t history = 0;            ///< Association history, bit 0 = latest frame.
   bool associated = false;             ///< A measurement was used in the latest frame.
   std::int16_t measurement_index = -1; ///< Its index in the latest scan, -1 if none.
-  Scalar nis{};                        ///< nu^T S^-1 nu of the latest association.
-  MeasVec innovation = MeasVec::Zero();  ///< nu of the latest association, measurement units.
-  MeasVec innovation_variance = MeasVec::Zero();  ///< diag(S) of the latest association, measurement units squared.
-  Scalar test_ratio{};                 ///< nis / gate threshold of the latest association (<= 1 inside).
+  Scalar nis{};                        ///< nu^T S^-1 nu of the latest association, as the gate tested it.
+  Scalar test_ratio{};                 ///< nis / association gate threshold (<= 1 inside).
   Scalar score{};                      ///< Track score of a score-based manager (SequentialLlr), 0 otherwise.
   Scalar score_peak{};                 ///< Highest score so far.
 };
@@ -57,10 +57,20 @@ struct TrackReport {
   std::uint16_t misses = 0;            ///< Consecutive misses.
   bool associated = false;             ///< Updated in this frame.
   std::int16_t measurement_index = -1; ///< Scan entry used in this frame, -1 if none.
-  Scalar nis{};                        ///< NIS of this frame's association (if associated).
-  MeasVec innovation = MeasVec::Zero();  ///< nu of the latest association (this frame's if associated).
-  MeasVec innovation_variance = MeasVec::Zero();  ///< diag(S) of the latest association.
-  Scalar test_ratio{};                 ///< nis / gate threshold of the latest association.
+  /// NIS of the latest association (this frame's if associated) as the
+  /// association gate tested it: nu^T S^-1 nu with the S predicted before
+  /// the plot was seen, the predictive consistency test.
+  Scalar nis{};
+  Scalar test_ratio{};                 ///< nis / association gate threshold (0: no gate).
+  /// The filter's latest update attempt (this frame's if associated), per
+  /// channel: nu_i, S_ii, test ratio where a channel gate ran, present /
+  /// rejected / fused channels, the NIS of the update as fused, its status
+  /// (a refused update shows here with fused == false). Every filter keeps
+  /// this record (TrackingFilter::diagnostics()); the track stores no copy.
+  /// fusion.nis is nis for the EKF (to rounding in its sequential form); a
+  /// filter that adapts R to the plot (R2-AEKF) fuses with another S, so
+  /// its fusion.nis is not the predictive test.
+  FusionDiagnostics<Scalar, Filter::kMeasDim> fusion{};
   Scalar score{};                      ///< Track score (SequentialLlr), 0 under M-of-N.
   State x{};                           ///< State estimate, motion-model layout.
   Cov P{};                             ///< State covariance.

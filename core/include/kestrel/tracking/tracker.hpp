@@ -54,6 +54,7 @@
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
 #include "kestrel/tracking/elapsed.hpp"
+#include "kestrel/tracking/frame_clock.hpp"
 #include "kestrel/tracking/m_of_n.hpp"
 #include "kestrel/tracking/measurement_scan.hpp"
 #include "kestrel/tracking/track.hpp"
@@ -72,6 +73,7 @@ concept TrackingFilter = requires(F& f, const F& cf, const typename F::State& x,
   { f.update(z) } -> std::same_as<Status>;
   { cf.x() } -> std::convertible_to<typename F::State>;
   { cf.P() } -> std::convertible_to<typename F::Cov>;
+  { cf.diagnostics() } -> std::convertible_to<FusionDiagnostics<typename F::Scalar, F::kMeasDim>>;
 };
 
 /// A filter that hands out what every plot is measured against (Ekf: h(x)
@@ -167,7 +169,11 @@ class Tracker {
   ///                   (GNN's cost matrix) is built in place, never copied.
   Tracker(const Filter& prototype, const Initiator& initiator, const Config& config,
           const ManagerT& manager = ManagerT{}, const AssociatorParams& associator = AssociatorParams{})
-      : initiator_(initiator), config_(config), manager_(manager), associator_(associator) {
+      : initiator_(initiator),
+        config_(config),
+        manager_(manager),
+        associator_(associator),
+        clock_(config.max_forward_jump_us, config.resync_frames) {
     prototype_.filter = prototype;
     gate_confirmed_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_confirmed);
     gate_tentative_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_tentative);
@@ -276,10 +282,12 @@ class Tracker {
     stats_ = StepStats{};
     report_count_ = 0;
     Status valid = validate(scan);
-    if (valid == Status::kOk) valid = check_time(scan.t_us);
+    if (valid == Status::kOk) valid = clock_.check(scan.t_us);
+    bool resync = false;
     if (valid == Status::kTimeWentBackwards || valid == Status::kTimeJumpedForward) {
-      if (off_clock_frame(scan.t_us)) {
-        restart_clock();
+      if (clock_.off_clock(scan.t_us)) {
+        delete_all_tracks();
+        resync = true;
         valid = Status::kOk;
       }
     }
@@ -288,9 +296,8 @@ class Tracker {
       ++rejected_[static_cast<std::size_t>(valid)];
       return valid;
     }
-    off_clock_count_ = 0;
-    have_time_ = true;
-    last_t_us_ = scan.t_us;
+    clock_.accept(scan.t_us, resync);
+    stats_.resynced = resync;
     stats_.measurements = static_cast<std::uint16_t>(scan.count);
 
     bool used[kMaxMeasurements] = {};
@@ -317,7 +324,7 @@ class Tracker {
   /// Frames refused so far, per status.
   std::uint32_t rejected(Status s) const { return rejected_[static_cast<std::size_t>(s)]; }
   /// Restarts on a new clock so far (header comment).
-  std::uint32_t resyncs() const { return resyncs_; }
+  std::uint32_t resyncs() const { return clock_.resyncs(); }
 
  private:
   /// The frame's content: count, finiteness, measurement box.
@@ -338,36 +345,12 @@ class Tracker {
     return Status::kOk;
   }
 
-  /// The frame's time against the clock of the last accepted frame.
-  Status check_time(std::int64_t t_us) const {
-    if (!have_time_) return Status::kOk;
-    if (t_us < last_t_us_) return Status::kTimeWentBackwards;
-    if (elapsed_us(t_us, last_t_us_) > config_.max_forward_jump_us) return Status::kTimeJumpedForward;
-    return Status::kOk;
-  }
-
-  /// Count a well-formed frame refused for its time. Consecutive ones on
-  /// one consistent clock add up; one that is not consistent with the
-  /// previous starts the count again.
-  /// @return true when the count reaches config.resync_frames.
-  bool off_clock_frame(std::int64_t t_us) {
-    const bool consistent = off_clock_count_ > 0 && t_us >= off_clock_t_us_ &&
-                            elapsed_us(t_us, off_clock_t_us_) <= config_.max_forward_jump_us;
-    off_clock_count_ = consistent ? static_cast<std::uint8_t>(off_clock_count_ < UINT8_MAX ? off_clock_count_ + 1 : off_clock_count_)
-                                  : std::uint8_t{1};
-    off_clock_t_us_ = t_us;
-    return config_.resync_frames > 0 && off_clock_count_ >= config_.resync_frames;
-  }
-
-  /// Delete every track and take the next frame's time as the clock.
-  void restart_clock() {
+  /// The resync rule took a new clock: no track's time means anything on it.
+  void delete_all_tracks() {
     for (const std::size_t i : table_.active_slots()) {
       table_.release(i);
       ++stats_.deleted;
     }
-    have_time_ = false;
-    stats_.resynced = true;
-    ++resyncs_;
   }
 
   /// P_G in the scalar, converted at compile time (no double work on a board).
@@ -448,8 +431,6 @@ class Tracker {
     tr.associated = true;
     tr.measurement_index = static_cast<std::int16_t>(j);
     tr.nis = in.d2;
-    tr.innovation = in.nu;
-    tr.innovation_variance = in.S.diagonal();
     tr.test_ratio = in.d2 / gate.threshold;
     manager_.hit(tr, in);
     ++stats_.associated;
@@ -491,8 +472,6 @@ class Tracker {
     tr.associated = true;
     tr.measurement_index = static_cast<std::int16_t>(index[best]);
     tr.nis = in.d2;
-    tr.innovation = in.nu;
-    tr.innovation_variance = in.S.diagonal();
     tr.test_ratio = in.d2 / gate.threshold;
     if constexpr (requires { manager_.hit_weighted(tr, beta_none); }) {
       manager_.hit_weighted(tr, beta_none);  // the evidence of the whole gate
@@ -678,8 +657,7 @@ class Tracker {
       r.associated = tr.associated;
       r.measurement_index = tr.measurement_index;
       r.nis = tr.nis;
-      r.innovation = tr.innovation;
-      r.innovation_variance = tr.innovation_variance;
+      r.fusion = tr.filter.diagnostics();
       r.test_ratio = tr.test_ratio;
       r.score = tr.score;
       r.x = tr.filter.x();
@@ -701,11 +679,7 @@ class Tracker {
   std::size_t report_count_ = 0;
   StepStats stats_{};
   std::uint32_t rejected_[kStatusCount] = {};
-  std::int64_t last_t_us_ = 0;
-  bool have_time_ = false;
-  std::int64_t off_clock_t_us_ = 0;  ///< Time of the last frame refused for its time.
-  std::uint8_t off_clock_count_ = 0;  ///< Consecutive consistent ones (resync rule).
-  std::uint32_t resyncs_ = 0;
+  FrameClock clock_{};
 };
 
 }  // namespace kestrel

@@ -32,8 +32,10 @@
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
 #include "kestrel/tracking/elapsed.hpp"
+#include "kestrel/tracking/frame_clock.hpp"
 #include "kestrel/tracking/multilateration.hpp"
 #include "kestrel/tracking/toa_scan.hpp"
+#include "kestrel/tracking/track.hpp"
 
 namespace kestrel {
 
@@ -102,20 +104,6 @@ struct UnderwaterCounters {
   std::uint32_t rejected[kStatusCount] = {};  ///< Steps refused, per status.
 };
 
-/// The tracker's output for one frame.
-template <class Scalar>
-struct UnderwaterReport {
-  using State = Vec<Scalar, 7>;
-  using Cov = Mat<Scalar, 7, 7>;
-  std::int64_t t_us = 0;      ///< Frame time, microseconds.
-  State x = State::Zero();    ///< [x y z vx vy vz c]: m, m, m (depth down), m/s x3, m/s.
-  Cov P = Cov::Zero();        ///< Covariance of x.
-  std::uint8_t fused = 0;     ///< Arrivals fused this frame.
-  std::uint8_t gated_out = 0; ///< Arrivals gated out this frame.
-  bool initialised = false;   ///< This frame was a (re)initialisation.
-  Scalar nis{};               ///< nu^T S^-1 nu over the fused channels.
-};
-
 template <class Scalar, int kMaxBeacons = 4, std::size_t kMaxArrivals = 2 * static_cast<std::size_t>(kMaxBeacons)>
 class UnderwaterTracker {
  public:
@@ -127,12 +115,20 @@ class UnderwaterTracker {
   using Cov = typename Filter::Cov;
   using MeasVec = typename Filter::MeasVec;
   using Scan = ToaScan<Scalar, kMaxArrivals>;
-  using Report = UnderwaterReport<Scalar>;
+  /// Every tracker's report (tracking/track.hpp): x = [x y z vx vy vz c]
+  /// (m, m, m depth down, m/s x3, m/s); one confirmed track whose id
+  /// changes at every (re)initialisation (age 0 on that frame); fusion per
+  /// channel (channel = 2 beacon + path): innovation, variance, the
+  /// per-channel gate's test ratio, present / rejected (by a gate, or by
+  /// the fix on an initialisation) / fused; nis = fusion.nis and
+  /// test_ratio 0 (the labels associate, no gate on the whole frame).
+  using Report = TrackReport<Filter>;
   using Config = UnderwaterTrackerConfig<Scalar, kMaxBeacons>;
   static_assert(Motion::kStateDim == 7, "report layout");
   static_assert(kMaxArrivals <= 255, "per-frame counts are uint8");
 
-  explicit UnderwaterTracker(const Config& config) : config_(config) {
+  explicit UnderwaterTracker(const Config& config)
+      : config_(config), clock_(config.max_forward_jump_us, config.resync_frames) {
     Toa toa;
     toa.config = config.toa;
     filter_ = Filter(config.motion, toa);
@@ -174,7 +170,7 @@ class UnderwaterTracker {
     if (valid == Status::kTimeWentBackwards || valid == Status::kTimeJumpedForward) {
       z.setZero();
       present = 0;
-      if (validate(scan, z, present, false) == Status::kOk && off_clock_frame(scan.t_us)) {
+      if (validate(scan, z, present, false) == Status::kOk && clock_.off_clock(scan.t_us)) {
         resync = true;
         valid = Status::kOk;
       }
@@ -185,7 +181,7 @@ class UnderwaterTracker {
 
     Filter next = filter_;
     std::uint16_t lost_frames = lost_frames_;
-    const std::int64_t gap_us = initialised_ && !resync ? elapsed_us(scan.t_us, t_us_) : 0;
+    const std::int64_t gap_us = initialised_ && !resync ? elapsed_us(scan.t_us, clock_.last_us()) : 0;
     if (!initialised_ || resync || gap_us > config_.max_predict_us) {
       const Status s = initialise(next, z, present);
       if (s != Status::kOk) return refuse(s);
@@ -229,15 +225,27 @@ class UnderwaterTracker {
       const Status s = project_depth(next);
       if (s != Status::kOk) return refuse(s);
     }
+    if (stats_.initialised) {
+      track_id_ = track_id_ < UINT32_MAX ? track_id_ + 1 : 1;
+      age_ = 0;
+      hits_ = 0;
+      misses_ = 0;
+    } else {
+      age_ = static_cast<std::uint16_t>(age_ < UINT16_MAX ? age_ + 1 : age_);
+    }
+    if (stats_.fused > 0) {
+      hits_ = static_cast<std::uint16_t>(hits_ < UINT16_MAX ? hits_ + 1 : hits_);
+      misses_ = 0;
+    } else {
+      misses_ = static_cast<std::uint16_t>(misses_ < UINT16_MAX ? misses_ + 1 : misses_);
+    }
     filter_ = next;
     initialised_ = true;
     lost_frames_ = lost_frames;
-    t_us_ = scan.t_us;
-    have_time_ = true;
-    off_clock_count_ = 0;
+    clock_.accept(scan.t_us, resync);
     stats_.status = Status::kOk;
     stats_.resynced = resync;
-    if (resync) ++counters_.resyncs;
+    counters_.resyncs = clock_.resyncs();
     ++counters_.frames_ok;
     counters_.arrivals += stats_.arrivals;
     counters_.fused += stats_.fused;
@@ -247,12 +255,23 @@ class UnderwaterTracker {
 
     Report& r = reports_[0];
     r.t_us = scan.t_us;
+    r.track_id = track_id_;
+    r.status = TrackStatus::kConfirmed;
+    r.age = age_;
+    r.hits = hits_;
+    r.misses = misses_;
+    r.associated = stats_.fused > 0;
+    r.measurement_index = r.associated ? std::int16_t{0} : std::int16_t{-1};
+    r.fusion = filter_.diagnostics();
+    if (stats_.initialised) {  // the fix chose the channels; the update had only its inliers
+      r.fusion.present = stats_.present;
+      r.fusion.rejected = stats_.gated_mask;
+    }
+    r.nis = r.fusion.nis;  // no association gate: the update's NIS
+    r.test_ratio = Scalar(0);
+    r.score = Scalar(0);
     r.x = filter_.x();
     r.P = filter_.P();
-    r.fused = stats_.fused;
-    r.gated_out = stats_.gated_out;
-    r.initialised = stats_.initialised;
-    r.nis = filter_.diagnostics().nis;
     report_count_ = 1;
     return Status::kOk;
   }
@@ -291,9 +310,8 @@ class UnderwaterTracker {
       if (has_channel(present, ch)) return Status::kMalformedFrame;
       present = with_channel(present, ch);
     }
-    if (check_time && have_time_) {
-      if (scan.t_us < t_us_) return Status::kTimeWentBackwards;
-      if (elapsed_us(scan.t_us, t_us_) > config_.max_forward_jump_us) return Status::kTimeJumpedForward;
+    if (check_time) {
+      if (const Status s = clock_.check(scan.t_us); s != Status::kOk) return s;
     }
     for (std::size_t i = 0; i < kMaxArrivals; ++i) {
       if (i >= scan.count) break;
@@ -307,18 +325,6 @@ class UnderwaterTracker {
       z(Toa::channel(a.beacon, a.path)) = a.toa_s;
     }
     return Status::kOk;
-  }
-
-  /// Count a frame refused for its time (Tracker's rule): consecutive ones
-  /// on one consistent clock add up, any other starts the count again.
-  /// @return true when the count reaches config.resync_frames.
-  bool off_clock_frame(std::int64_t t_us) {
-    const bool consistent = off_clock_count_ > 0 && t_us >= off_clock_t_us_ &&
-                            elapsed_us(t_us, off_clock_t_us_) <= config_.max_forward_jump_us;
-    off_clock_count_ = consistent ? static_cast<std::uint8_t>(off_clock_count_ < UINT8_MAX ? off_clock_count_ + 1 : off_clock_count_)
-                                  : std::uint8_t{1};
-    off_clock_t_us_ = t_us;
-    return config_.resync_frames > 0 && off_clock_count_ >= config_.resync_frames;
   }
 
   /// The channels the per-channel gate dropped in the last update (its
@@ -430,11 +436,12 @@ class UnderwaterTracker {
   UnderwaterCounters counters_{};
   Report reports_[1]{};
   std::size_t report_count_ = 0;
-  std::int64_t t_us_ = 0;
+  FrameClock clock_{};  ///< Last accepted frame's time and the time-fault rules.
   std::uint16_t lost_frames_ = 0;  ///< Consecutive lost frames (reacquire_after_lost_frames).
-  std::int64_t off_clock_t_us_ = 0;   ///< Time of the last frame refused for its time.
-  std::uint8_t off_clock_count_ = 0;  ///< Consecutive consistent ones (resync rule).
-  bool have_time_ = false;
+  std::uint32_t track_id_ = 0;     ///< Id of the current track (a new one per initialisation, from 1).
+  std::uint16_t age_ = 0;          ///< Frames since the track's initialisation.
+  std::uint16_t hits_ = 0;         ///< Frames that fused an arrival since then.
+  std::uint16_t misses_ = 0;       ///< Consecutive predict-only frames.
   bool initialised_ = false;
 };
 
