@@ -5,6 +5,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "kestrel/hal/frame_codec.hpp"
 #include "kestrel/hal/frame_format.hpp"
@@ -19,6 +20,8 @@ namespace {
 constexpr int kUwBeacons = 4;
 using UwTracker = UnderwaterTracker<double, kUwBeacons>;
 
+}  // namespace
+
 std::vector<std::uint8_t> encode_uw_stream(const UwScenarioRun& run) {
   std::vector<std::uint8_t> bytes;
   std::array<std::uint8_t, hal::wire::kMaxEncodedFrameBytes> buffer{};
@@ -30,8 +33,6 @@ std::vector<std::uint8_t> encode_uw_stream(const UwScenarioRun& run) {
   }
   return bytes;
 }
-
-}  // namespace
 
 UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario, const UnderwaterTrackerParams& base) {
   if (scenario.beacons_m.size() > static_cast<std::size_t>(kUwBeacons)) {
@@ -48,24 +49,33 @@ UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario, const Un
 }
 
 UwRunOutput run_uw(const UwScenarioRun& run, const UnderwaterTrackerParams& params, std::uint64_t budget_ns) {
+  UwRunOutput out = run_uw_stream(encode_uw_stream(run), params, budget_ns);
+  if (out.frames.size() != run.frames.size()) throw std::runtime_error("sonar stream ended early");
+  return out;
+}
+
+UwRunOutput run_uw_stream(std::vector<std::uint8_t> stream, const UnderwaterTrackerParams& params,
+                          std::uint64_t budget_ns) {
   using Report = UwTracker::Report;
   using Sink = host::MemorySink<Report>;
   using Runner = hal::Runner<host::Feed, host::Clock, UwTracker, hal::SonarAdapter, Sink>;
 
   auto tracker = std::make_unique<UwTracker>(make_underwater_tracker<double, kUwBeacons>(params));
-  host::StreamFileFeed feed(encode_uw_stream(run));
+  // Every poll that does not return kNoData consumes at least one byte.
+  const std::size_t max_polls = stream.size() + 1;
+  host::StreamFileFeed feed(std::move(stream));
   host::SteadyClock clock;
-  Sink sink(run.frames.size());
+  Sink sink(max_polls);
   const hal::SonarAdapter adapter;
   auto runner = std::make_unique<Runner>(feed, clock, *tracker, adapter, sink, budget_ns);
 
   UwRunOutput out;
-  for (std::size_t k = 0; k < run.frames.size(); ++k) {
+  for (std::size_t k = 0; k < max_polls; ++k) {
     const std::size_t first = sink.size();
     const std::uint32_t steps_before = runner->stats().steps;
     UwFrameOutcome f;
     f.status = runner->poll_once();
-    if (f.status == Status::kNoData) throw std::runtime_error("sonar stream ended early");
+    if (f.status == Status::kNoData) break;
     f.stepped = runner->stats().steps != steps_before;
     f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
     if (f.stepped) {
@@ -79,6 +89,7 @@ UwRunOutput run_uw(const UwScenarioRun& run, const UnderwaterTrackerParams& para
     if (sink.size() > first) {
       const Report& r = sink.reports()[first];
       f.reported = true;
+      f.track_id = r.track_id;
       for (int i = 0; i < 7; ++i) {
         f.x[static_cast<std::size_t>(i)] = r.x(i);
         f.sd[static_cast<std::size_t>(i)] = std::sqrt(r.P(i, i));

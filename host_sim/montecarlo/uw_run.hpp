@@ -26,6 +26,7 @@ struct UwFrameOutcome {
   bool stepped = false;          ///< Reached UnderwaterTracker::step.
   std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
   bool reported = false;         ///< The tracker published an estimate.
+  std::uint32_t track_id = 0;    ///< Its track id (a new one at every (re)initialisation).
   bool initialised = false;      ///< This frame (re)started the track from a fix.
   bool predict_only = false;     ///< Tracked frame with nothing fused.
   std::array<double, 7> x{};     ///< [x y z vx vy vz c] (m, m/s, m/s).
@@ -47,7 +48,17 @@ struct UwRunOutput {
 UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario,
                                       const UnderwaterTrackerParams& base = UnderwaterTrackerParams{});
 
-/// Run the tracker with `params` over the run's frames.
+/// Run the tracker with `params` over the run's frames (std::runtime_error
+/// if the Runner does not see exactly one frame per wire frame).
 UwRunOutput run_uw(const UwScenarioRun& run, const UnderwaterTrackerParams& params, std::uint64_t budget_ns);
+
+/// Run the tracker with `params` over a sonar byte stream (any bytes: one
+/// outcome per Runner frame, malformed or refused ones included, until the
+/// stream is used up).
+UwRunOutput run_uw_stream(std::vector<std::uint8_t> stream, const UnderwaterTrackerParams& params,
+                          std::uint64_t budget_ns);
+
+/// The run's frames as the wire byte stream a sonar sends.
+std::vector<std::uint8_t> encode_uw_stream(const UwScenarioRun& run);
 
 }  // namespace kestrel::sim

@@ -1,0 +1,217 @@
+// Faults injected into a sonar stream on the path a board receives it:
+// uw003 (seed 1, 50 frames at 1 s) -> wire bytes -> StreamFileFeed (frame
+// assembler) -> SonarAdapter -> UnderwaterTracker::step, inside hal::Runner
+// (sim::run_uw_stream). The radar counterpart is fault_injection_test.cpp;
+// the table of both is in docs/robustness.md. Each fault has its expected
+// count of every status the Runner returns and of the tracks that replace
+// the first one (only where a documented rule restarts it: a gap over
+// max_predict_us, a clock the resync rule takes), and every run is checked
+// for:
+//   - every frame the tracker accepts publishes one report, whose track id
+//     is the first track's or that of a documented restart;
+//   - recovery: the last estimate is the clean run's to within three times
+//     the clean run's position sigma (sqrt of the trace of its position
+//     covariance), and every estimate's covariance is positive definite.
+#include <array>
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "kestrel/hal/crc32.hpp"
+#include "kestrel/hal/frame_codec.hpp"
+#include "kestrel/hal/frame_format.hpp"
+#include "montecarlo/uw_run.hpp"
+
+using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
+using kestrel::Status;
+
+namespace {
+
+constexpr std::size_t kFaultAt = 20;  // frame index where each fault starts (t = 20 s)
+constexpr std::int64_t kSecondUs = 1'000'000;
+
+using Bytes = std::vector<std::uint8_t>;
+
+Bytes encode_one(const kestrel::hal::Frame& f) {
+  std::array<std::uint8_t, kestrel::hal::wire::kMaxEncodedFrameBytes> buffer{};
+  std::size_t written = 0;
+  REQUIRE(kestrel::hal::encode(f, buffer, written) == Status::kOk);
+  return Bytes(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written));
+}
+
+void append(Bytes& out, const Bytes& b) { out.insert(out.end(), b.begin(), b.end()); }
+
+struct Fault {
+  std::string name;
+  Bytes stream;
+  std::map<Status, std::size_t> not_ok;  ///< Expected count of each status other than kOk.
+  std::size_t frames = 0;                ///< Frames the Runner should see.
+  std::size_t new_tracks = 0;            ///< Tracks started after the first by a documented rule.
+};
+
+std::vector<Fault> make_faults(const UwScenarioRun& run) {
+  const std::size_t n = run.frames.size();
+  std::vector<Fault> faults;
+  const auto each = [&](auto&& per_frame) {
+    Bytes out;
+    for (std::size_t k = 0; k < n; ++k) {
+      kestrel::hal::Frame f = run.frames[k].wire;
+      per_frame(k, f, out);
+    }
+    return out;
+  };
+  const auto plain = [](std::size_t, const kestrel::hal::Frame& f, Bytes& out) { append(out, encode_one(f)); };
+
+  faults.push_back({"none", each(plain), {}, n, 0});
+
+  // Dropout burst: 5 frames missing (a 6 s gap, under max_predict_us = 60 s).
+  faults.push_back({"dropout burst, 5 s", each([&](std::size_t k, const kestrel::hal::Frame& f, Bytes& out) {
+                      if (k < kFaultAt || k >= kFaultAt + 5) append(out, encode_one(f));
+                    }),
+                    {}, n - 5, 0});
+
+  // Outlier burst: in 4 frames two arrivals each 25 ms late (37 m at
+  // 1500 m/s, over 5 sigma of the 3 ms TOA noise): the per-channel gate drops
+  // them and the track fuses the rest.
+  faults.push_back({"outlier burst, 4 frames x 2 arrivals 25 ms late",
+                    each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
+                      if (k >= kFaultAt && k < kFaultAt + 4) {
+                        for (std::size_t i = 0; i < 2 && i < f.count; ++i) {
+                          f.sonar[(k + 3 * i) % f.count].time_of_flight_ns += 25'000'000u;
+                        }
+                      }
+                      append(out, encode_one(f));
+                    }),
+                    {}, n, 0});
+
+  // Sensor stall: the sonar is silent for 70 s from frame 20 (its clock
+  // runs on): over max_predict_us, the track restarts from a fresh fix.
+  faults.push_back({"stall, 70 s", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
+                      if (k >= kFaultAt) f.t_us += 70 * kSecondUs;
+                      append(out, encode_one(f));
+                    }),
+                    {}, n, 1});
+
+  // Duplicated frames: 5 frames each sent twice (same time, same arrivals).
+  faults.push_back({"duplicated frames x 5", each([&](std::size_t k, const kestrel::hal::Frame& f, Bytes& out) {
+                      append(out, encode_one(f));
+                      if (k >= kFaultAt && k < kFaultAt + 5) append(out, encode_one(f));
+                    }),
+                    {}, n + 5, 0});
+
+  // Sensor reset: from frame 30 the clock is 30 s behind. The first
+  // resync_frames - 1 = 2 frames of the new clock are refused, the third
+  // is taken (resync) and the track restarts from its fix.
+  faults.push_back({"sensor reset, clock back 30 s", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
+                      if (k >= 30) f.t_us -= 30 * kSecondUs;
+                      append(out, encode_one(f));
+                    }),
+                    {{Status::kTimeWentBackwards, 2}}, n, 1});
+
+  // One corrupted timestamp a day ahead (CRC valid): refused, nothing else.
+  faults.push_back({"one frame 1 day ahead", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
+                      if (k == kFaultAt) f.t_us += 86400 * kSecondUs;
+                      append(out, encode_one(f));
+                    }),
+                    {{Status::kTimeJumpedForward, 1}}, n, 0});
+
+  // Over capacity: 3 frames carry a ninth arrival (a copy of the first)
+  // where the tracker's scan holds 8 (4 beacons x 2 paths): the first 8
+  // are tracked, the frame reports kTooManyCandidates.
+  faults.push_back({"3 frames over capacity (9 arrivals)", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
+                      if (k >= kFaultAt && k < kFaultAt + 3 && f.count == 8) {
+                        f.sonar[8] = f.sonar[0];
+                        f.count = 9;
+                      }
+                      append(out, encode_one(f));
+                    }),
+                    {{Status::kTooManyCandidates, 3}}, n, 0});
+
+  // An arrival labelled with a beacon the installation does not have:
+  // the frame is refused (kOutOfRange), nothing else changes.
+  faults.push_back({"arrival from an unknown beacon", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
+                      if (k == kFaultAt) f.sonar[0].beacon_id = 6;
+                      append(out, encode_one(f));
+                    }),
+                    {{Status::kOutOfRange, 1}}, n, 0});
+
+  // Corrupted bytes: one payload byte flipped in 3 frames (CRC fails), and
+  // 7 bytes of line noise before another frame: the assembler reports the
+  // noise once (kBadMagic, one more Runner frame) and resyncs.
+  faults.push_back({"corrupted bytes in 4 frames", each([&](std::size_t k, const kestrel::hal::Frame& f, Bytes& out) {
+                      Bytes b = encode_one(f);
+                      if (k == kFaultAt || k == kFaultAt + 10 || k == kFaultAt + 11) {
+                        b[kestrel::hal::wire::kHeaderSize + 5] ^= 0x40u;
+                      }
+                      if (k == kFaultAt + 20) append(out, Bytes{0x4B, 0x53, 0x00, 0xFF, 0x4B, 0x53, 0x54});
+                      append(out, b);
+                    }),
+                    {{Status::kBadCrc, 3}, {Status::kBadMagic, 1}}, n + 1, 0});
+  return faults;
+}
+
+struct Observed {
+  std::map<Status, std::size_t> not_ok;
+  std::size_t frames = 0;
+  std::size_t accepted_without_report = 0;
+  std::vector<std::uint32_t> track_ids;  ///< In order of first appearance.
+  bool all_covariances_pd = true;
+  std::array<double, 3> final_position{};
+  double final_position_sigma = 0.0;
+};
+
+Observed observe(const UwRunOutput& out) {
+  Observed o;
+  o.frames = out.frames.size();
+  for (const UwFrameOutcome& f : out.frames) {
+    if (f.status != Status::kOk) ++o.not_ok[f.status];
+    const bool accepted = f.stepped && (f.status == Status::kOk || f.status == Status::kTooManyCandidates);
+    if (accepted && !f.reported) ++o.accepted_without_report;
+    if (!f.reported) continue;
+    if (o.track_ids.empty() || o.track_ids.back() != f.track_id) o.track_ids.push_back(f.track_id);
+    // The position block: its three leading minors positive.
+    const auto& p = f.p_pos;
+    const double m2 = p[0] * p[4] - p[1] * p[3];
+    const double m3 = p[0] * (p[4] * p[8] - p[5] * p[7]) - p[1] * (p[3] * p[8] - p[5] * p[6]) +
+                      p[2] * (p[3] * p[7] - p[4] * p[6]);
+    o.all_covariances_pd = o.all_covariances_pd && p[0] > 0.0 && m2 > 0.0 && m3 > 0.0;
+    o.final_position = {f.x[0], f.x[1], f.x[2]};
+    o.final_position_sigma = std::sqrt(p[0] + p[4] + p[8]);
+  }
+  return o;
+}
+
+}  // namespace
+
+SCENARIO("injected sonar stream faults give their status counts, keep or restart the track by rule, and recover",
+         "[host_sim][faults][uw]") {
+  const UwScenarioConfig config = uw003_config();
+  const UwScenarioRun run = generate_uw(config, 1);
+  const kestrel::UnderwaterTrackerParams params = uw_params_for(config);
+  const std::vector<Fault> faults = make_faults(run);
+  const Observed clean = observe(run_uw_stream(faults.front().stream, params, 1'000'000'000));
+  REQUIRE(clean.track_ids.size() == 1);
+  for (const Fault& fault : faults) {
+    INFO("fault: " << fault.name);
+    const Observed o = observe(run_uw_stream(fault.stream, params, 1'000'000'000));
+    std::string seen;
+    for (const auto& [status, count] : o.not_ok) seen += std::string(kestrel::to_string(status)) + " " + std::to_string(count) + "; ";
+    const double moved = std::hypot(o.final_position[0] - clean.final_position[0],
+                                    o.final_position[1] - clean.final_position[1],
+                                    o.final_position[2] - clean.final_position[2]);
+    INFO("statuses other than kOk: " << seen << "tracks " << o.track_ids.size() << ", final estimate " << moved
+                                     << " m from the clean run's (its position sigma " << clean.final_position_sigma
+                                     << " m)");
+    CHECK(o.frames == fault.frames);
+    CHECK(o.not_ok == fault.not_ok);
+    CHECK(o.accepted_without_report == 0);
+    CHECK(o.track_ids.size() == 1 + fault.new_tracks);
+    CHECK(std::set<std::uint32_t>(o.track_ids.begin(), o.track_ids.end()).size() == o.track_ids.size());
+    CHECK(o.all_covariances_pd);
+    CHECK(moved <= 3.0 * clean.final_position_sigma);
+  }
+}
