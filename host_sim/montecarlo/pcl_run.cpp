@@ -2,9 +2,11 @@
 
 #include <array>
 #include <limits>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "kestrel/association/global_nearest_neighbour.hpp"
 #include "kestrel/hal/frame_codec.hpp"
@@ -13,8 +15,6 @@
 #include "kestrel/host/board.hpp"
 
 namespace kestrel::sim {
-
-namespace {
 
 std::vector<std::uint8_t> encode_pcl_stream(const PclScenarioRun& run) {
   std::vector<std::uint8_t> bytes;
@@ -28,9 +28,38 @@ std::vector<std::uint8_t> encode_pcl_stream(const PclScenarioRun& run) {
   return bytes;
 }
 
+namespace {
+
+/// Which candidate of a frame is the target's, looked up by the frame's
+/// content (count and every candidate), so that a stream with frames
+/// dropped, repeated or re-timed still finds it; -1 when unknown.
+class TargetIndexByContent {
+ public:
+  explicit TargetIndexByContent(const std::vector<PclFrameRecord>& frames) {
+    for (const PclFrameRecord& f : frames) index_.emplace(key(f.wire), f.target_index);
+  }
+  int operator()(const hal::Frame& frame) const {
+    const auto it = index_.find(key(frame));
+    return it == index_.end() ? -1 : it->second;
+  }
+
+ private:
+  static std::vector<std::int64_t> key(const hal::Frame& f) {
+    std::vector<std::int64_t> k{static_cast<std::int64_t>(f.count)};
+    for (std::size_t i = 0; i < f.count && i < hal::kMaxPclCandidates; ++i) {
+      k.push_back(f.pcl[i].bistatic_range_mm);
+      k.push_back(f.pcl[i].doppler_mhz);
+      k.push_back(f.pcl[i].snr_cdb);
+    }
+    return k;
+  }
+  std::map<std::vector<std::int64_t>, int> index_;
+};
+
 template <std::size_t kTracks, std::size_t kCandidates, template <class, std::size_t, std::size_t> class Associator,
           template <class> class Manager>
-PclRunOutput run_typed(const PclScenarioRun& run, const PclTrackerParams& params, std::uint64_t budget_ns) {
+PclRunOutput run_typed(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                       const PclTrackerParams& params, std::uint64_t budget_ns) {
   using Tracker = PclTracker<PclKf<double>, kTracks, kCandidates, Associator, Manager>;
   using Report = typename Tracker::Report;
   using Adapter = hal::PclAdapter<Tracker>;
@@ -40,9 +69,12 @@ PclRunOutput run_typed(const PclScenarioRun& run, const PclTrackerParams& params
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker =
       std::make_unique<Tracker>(make_pcl_tracker<double, kTracks, kCandidates, Associator, Manager>(params));
-  host::StreamFileFeed feed(encode_pcl_stream(run));
+  // Every poll that does not return kNoData consumes at least one byte.
+  const std::size_t max_polls = stream.size() + 1;
+  const TargetIndexByContent target_index_of(reference);
+  host::StreamFileFeed feed(std::move(stream));
   host::SteadyClock clock;
-  Sink sink(run.frames.size() * kTracks);
+  Sink sink(reference.size() * kTracks);
   hal::PclAdapterConfig adapter_config;
   adapter_config.carrier_hz = params.carrier_hz;
   const Adapter adapter(tracker.get(), adapter_config);
@@ -52,15 +84,15 @@ PclRunOutput run_typed(const PclScenarioRun& run, const PclTrackerParams& params
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<PclTrackRow> previous;
   double previous_t_s = 0.0;
-  for (std::size_t k = 0; k < run.frames.size(); ++k) {
+  for (std::size_t k = 0; k < max_polls; ++k) {
     const std::size_t first = sink.size();
     const std::uint32_t steps_before = runner->stats().steps;
     PclFrameOutcome f;
     f.status = runner->poll_once();
-    if (f.status == Status::kNoData) throw std::runtime_error("PCL stream ended early");
+    if (f.status == Status::kNoData) break;
     f.stepped = runner->stats().steps != steps_before;
     f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
-    const double t_s = static_cast<double>(run.frames[k].wire.t_us) * 1e-6;
+    const double t_s = f.stepped ? static_cast<double>(runner->last_frame().t_us) * 1e-6 : previous_t_s;
     // Scan entry -> wire index: the adapter keeps candidates in frame order,
     // so walk both lists (exact compare: the same conversion, bit for bit).
     std::vector<int> wire_index;
@@ -71,11 +103,12 @@ PclRunOutput run_typed(const PclScenarioRun& run, const PclTrackerParams& params
       f.refused_starts = tracker->last_step().refused;
       f.dropped_starts = tracker->last_step().dropped;
       f.tracks_in_table = tracker->tracks().size();
+      f.target_index = target_index_of(frame);
       std::size_t j = 0;
       for (std::size_t i = 0; i < scan.count; ++i) {
         while (j < frame.count && !(hal::to_measurement(frame.pcl[j], adapter.lambda_m()) == scan.z[i])) ++j;
         wire_index.push_back(j < frame.count ? static_cast<int>(j) : -1);
-        if (static_cast<int>(j) == run.frames[k].target_index) f.target_in_scan = true;
+        if (static_cast<int>(j) == f.target_index) f.target_in_scan = true;
         ++j;
       }
     }
@@ -140,36 +173,50 @@ PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario) {
 namespace {
 
 template <std::size_t kTracks, std::size_t kCandidates, template <class, std::size_t, std::size_t> class Associator>
-PclRunOutput run_with_manager(const PclScenarioRun& run, const PclTrackerParams& params, ManagerChoice manager,
-                              std::uint64_t budget_ns) {
+PclRunOutput run_with_manager(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                              const PclTrackerParams& params, ManagerChoice manager, std::uint64_t budget_ns) {
   if (manager == ManagerChoice::kScore)
-    return run_typed<kTracks, kCandidates, Associator, SequentialLlr>(run, params, budget_ns);
-  return run_typed<kTracks, kCandidates, Associator, MOfN>(run, params, budget_ns);
+    return run_typed<kTracks, kCandidates, Associator, SequentialLlr>(std::move(stream), reference, params, budget_ns);
+  return run_typed<kTracks, kCandidates, Associator, MOfN>(std::move(stream), reference, params, budget_ns);
 }
 
 template <std::size_t kTracks, std::size_t kCandidates>
-PclRunOutput run_composed(const PclScenarioRun& run, const PclTrackerParams& params, const TrackerPolicies& policies,
-                          std::uint64_t budget_ns) {
+PclRunOutput run_composed(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                          const PclTrackerParams& params, const TrackerPolicies& policies, std::uint64_t budget_ns) {
   switch (policies.associator) {
     case AssociatorChoice::kGlobalNearestNeighbour:
-      return run_with_manager<kTracks, kCandidates, GlobalNearestNeighbour>(run, params, policies.manager, budget_ns);
+      return run_with_manager<kTracks, kCandidates, GlobalNearestNeighbour>(std::move(stream), reference, params,
+                                                                            policies.manager, budget_ns);
     case AssociatorChoice::kPda:
-      return run_with_manager<kTracks, kCandidates, ProbabilisticDataAssociation>(run, params, policies.manager,
-                                                                                   budget_ns);
+      return run_with_manager<kTracks, kCandidates, ProbabilisticDataAssociation>(std::move(stream), reference, params,
+                                                                                   policies.manager, budget_ns);
     case AssociatorChoice::kNearestNeighbour:
       break;
   }
-  return run_with_manager<kTracks, kCandidates, NearestNeighbour>(run, params, policies.manager, budget_ns);
+  return run_with_manager<kTracks, kCandidates, NearestNeighbour>(std::move(stream), reference, params,
+                                                                  policies.manager, budget_ns);
 }
 
 }  // namespace
 
-PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
-                     const TrackerPolicies& policies, std::uint64_t budget_ns) {
-  if (scenario.scan_capacity == 32) return run_composed<kPclMaxTracks, 32>(run, params, policies, budget_ns);
-  if (scenario.scan_capacity == 64) return run_composed<2 * kPclMaxTracks, 64>(run, params, policies, budget_ns);
+PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const TrackerPolicies& policies, std::uint64_t budget_ns) {
+  if (scenario.scan_capacity == 32) {
+    return run_composed<kPclMaxTracks, 32>(std::move(stream), reference, params, policies, budget_ns);
+  }
+  if (scenario.scan_capacity == 64) {
+    return run_composed<2 * kPclMaxTracks, 64>(std::move(stream), reference, params, policies, budget_ns);
+  }
   (void)pcl_track_capacity(scenario.scan_capacity);  // throws with the message
   return {};
+}
+
+PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                     const TrackerPolicies& policies, std::uint64_t budget_ns) {
+  PclRunOutput out = run_pcl_stream(encode_pcl_stream(run), run.frames, scenario, params, policies, budget_ns);
+  if (out.frames.size() != run.frames.size()) throw std::runtime_error("PCL stream ended early");
+  return out;
 }
 
 }  // namespace kestrel::sim

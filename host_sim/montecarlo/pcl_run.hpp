@@ -41,6 +41,7 @@ struct PclFrameOutcome {
   bool stepped = false;          ///< Reached Tracker::step.
   std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
   std::size_t scan_count = 0;    ///< Candidates the tracker saw.
+  int target_index = -1;         ///< The target's detection in the wire frame, -1 if none or unknown.
   bool target_in_scan = false;   ///< The target's detection survived the adapter's cut.
   std::uint16_t refused_starts = 0;  ///< Candidates the initiator refused (zero-Doppler veto).
   std::uint16_t dropped_starts = 0;  ///< Candidates with no free table slot to start a track.
@@ -64,6 +65,18 @@ PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario);
 /// std::invalid_argument).
 PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
                      const TrackerPolicies& policies, std::uint64_t budget_ns);
+
+/// The same over a PCL byte stream (any bytes: one outcome per Runner
+/// frame, malformed or refused ones included, until the stream is used
+/// up). `reference` names the target's candidate in each frame it holds,
+/// found by the frame's content, so frames dropped, repeated or re-timed
+/// keep it.
+PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const TrackerPolicies& policies, std::uint64_t budget_ns);
+
+/// The run's frames as the wire byte stream the sensor sends.
+std::vector<std::uint8_t> encode_pcl_stream(const PclScenarioRun& run);
 
 /// Track-table capacity used with each scan capacity.
 std::size_t pcl_track_capacity(std::size_t scan_capacity);

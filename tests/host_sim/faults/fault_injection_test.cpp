@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "filters/filter_registry.hpp"
+#include "host_sim/faults/wire_faults.hpp"
 #include "kestrel/hal/crc32.hpp"
 #include "kestrel/hal/frame_format.hpp"
 #include "scenarios/registry.hpp"
@@ -197,8 +198,8 @@ std::vector<Fault> make_faults(const std::vector<MeasurementFrame>& frames) {
   // noise once (kBadMagic, one more Runner frame) and resyncs.
   faults.push_back({"corrupted bytes in 4 frames", each([&](std::size_t k, Bytes& out) {
                       Bytes b = encode_one(frames[k]);
-                      if (k == kFaultAt || k == kFaultAt + 50 || k == kFaultAt + 51) b[kestrel::hal::wire::kHeaderSize + 5] ^= 0x40u;
-                      if (k == kFaultAt + 100) append(out, Bytes{0x4B, 0x53, 0x00, 0xFF, 0x4B, 0x53, 0x54});
+                      if (k == kFaultAt || k == kFaultAt + 50 || k == kFaultAt + 51) kestrel::test::faults::flip_payload_bit(b);
+                      if (k == kFaultAt + 100) append(out, kestrel::test::faults::line_noise());
                       append(out, b);
                     }),
                     {{Status::kBadCrc, 3}, {Status::kBadMagic, 1}}, n + 1, 0});

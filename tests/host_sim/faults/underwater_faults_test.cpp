@@ -21,9 +21,7 @@
 #include <string>
 #include <vector>
 
-#include "kestrel/hal/crc32.hpp"
-#include "kestrel/hal/frame_codec.hpp"
-#include "kestrel/hal/frame_format.hpp"
+#include "host_sim/faults/wire_faults.hpp"
 #include "montecarlo/uw_run.hpp"
 
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
@@ -34,45 +32,26 @@ namespace {
 constexpr std::size_t kFaultAt = 20;  // frame index where each fault starts (t = 20 s)
 constexpr std::int64_t kSecondUs = 1'000'000;
 
-using Bytes = std::vector<std::uint8_t>;
-
-Bytes encode_one(const kestrel::hal::Frame& f) {
-  std::array<std::uint8_t, kestrel::hal::wire::kMaxEncodedFrameBytes> buffer{};
-  std::size_t written = 0;
-  REQUIRE(kestrel::hal::encode(f, buffer, written) == Status::kOk);
-  return Bytes(buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written));
-}
-
-void append(Bytes& out, const Bytes& b) { out.insert(out.end(), b.begin(), b.end()); }
-
-struct Fault {
-  std::string name;
-  Bytes stream;
-  std::map<Status, std::size_t> not_ok;  ///< Expected count of each status other than kOk.
-  std::size_t frames = 0;                ///< Frames the Runner should see.
-  std::size_t new_tracks = 0;            ///< Tracks started after the first by a documented rule.
-};
+using kestrel::test::faults::append;
+using kestrel::test::faults::Bytes;
+using kestrel::test::faults::corrupt_frames;
+using kestrel::test::faults::drop_frames;
+using kestrel::test::faults::each_frame;
+using kestrel::test::faults::encode_frame;
+using kestrel::test::faults::repeat_frames;
+using kestrel::test::faults::send_all;
+using kestrel::test::faults::shift_times;
+using Fault = kestrel::test::faults::WireFault;
 
 std::vector<Fault> make_faults(const UwScenarioRun& run) {
   const std::size_t n = run.frames.size();
   std::vector<Fault> faults;
-  const auto each = [&](auto&& per_frame) {
-    Bytes out;
-    for (std::size_t k = 0; k < n; ++k) {
-      kestrel::hal::Frame f = run.frames[k].wire;
-      per_frame(k, f, out);
-    }
-    return out;
-  };
-  const auto plain = [](std::size_t, const kestrel::hal::Frame& f, Bytes& out) { append(out, encode_one(f)); };
+  const auto each = [&](auto&& per_frame) { return each_frame(run.frames, per_frame); };
 
-  faults.push_back({"none", each(plain), {}, n, 0});
+  faults.push_back({"none", send_all(run.frames), {}, n, 0});
 
   // Dropout burst: 5 frames missing (a 6 s gap, under max_predict_us = 60 s).
-  faults.push_back({"dropout burst, 5 s", each([&](std::size_t k, const kestrel::hal::Frame& f, Bytes& out) {
-                      if (k < kFaultAt || k >= kFaultAt + 5) append(out, encode_one(f));
-                    }),
-                    {}, n - 5, 0});
+  faults.push_back({"dropout burst, 5 s", drop_frames(run.frames, kFaultAt, 5), {}, n - 5, 0});
 
   // Outlier burst: in 4 frames two arrivals each 25 ms late (37 m at
   // 1500 m/s, over 5 sigma of the 3 ms TOA noise): the per-channel gate drops
@@ -84,39 +63,25 @@ std::vector<Fault> make_faults(const UwScenarioRun& run) {
                           f.sonar[(k + 3 * i) % f.count].time_of_flight_ns += 25'000'000u;
                         }
                       }
-                      append(out, encode_one(f));
+                      append(out, encode_frame(f));
                     }),
                     {}, n, 0});
 
   // Sensor stall: the sonar is silent for 70 s from frame 20 (its clock
   // runs on): over max_predict_us, the track restarts from a fresh fix.
-  faults.push_back({"stall, 70 s", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
-                      if (k >= kFaultAt) f.t_us += 70 * kSecondUs;
-                      append(out, encode_one(f));
-                    }),
-                    {}, n, 1});
+  faults.push_back({"stall, 70 s", shift_times(run.frames, kFaultAt, 0, 70 * kSecondUs), {}, n, 1});
 
   // Duplicated frames: 5 frames each sent twice (same time, same arrivals).
-  faults.push_back({"duplicated frames x 5", each([&](std::size_t k, const kestrel::hal::Frame& f, Bytes& out) {
-                      append(out, encode_one(f));
-                      if (k >= kFaultAt && k < kFaultAt + 5) append(out, encode_one(f));
-                    }),
-                    {}, n + 5, 0});
+  faults.push_back({"duplicated frames x 5", repeat_frames(run.frames, kFaultAt, 5), {}, n + 5, 0});
 
   // Sensor reset: from frame 30 the clock is 30 s behind. The first
   // resync_frames - 1 = 2 frames of the new clock are refused, the third
   // is taken (resync) and the track restarts from its fix.
-  faults.push_back({"sensor reset, clock back 30 s", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
-                      if (k >= 30) f.t_us -= 30 * kSecondUs;
-                      append(out, encode_one(f));
-                    }),
+  faults.push_back({"sensor reset, clock back 30 s", shift_times(run.frames, 30, 0, -30 * kSecondUs),
                     {{Status::kTimeWentBackwards, 2}}, n, 1});
 
   // One corrupted timestamp a day ahead (CRC valid): refused, nothing else.
-  faults.push_back({"one frame 1 day ahead", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
-                      if (k == kFaultAt) f.t_us += 86400 * kSecondUs;
-                      append(out, encode_one(f));
-                    }),
+  faults.push_back({"one frame 1 day ahead", shift_times(run.frames, kFaultAt, 1, 86400 * kSecondUs),
                     {{Status::kTimeJumpedForward, 1}}, n, 0});
 
   // Over capacity: 3 frames carry a ninth arrival (a copy of the first)
@@ -127,7 +92,7 @@ std::vector<Fault> make_faults(const UwScenarioRun& run) {
                         f.sonar[8] = f.sonar[0];
                         f.count = 9;
                       }
-                      append(out, encode_one(f));
+                      append(out, encode_frame(f));
                     }),
                     {{Status::kTooManyCandidates, 3}}, n, 0});
 
@@ -135,21 +100,14 @@ std::vector<Fault> make_faults(const UwScenarioRun& run) {
   // the frame is refused (kOutOfRange), nothing else changes.
   faults.push_back({"arrival from an unknown beacon", each([&](std::size_t k, kestrel::hal::Frame f, Bytes& out) {
                       if (k == kFaultAt) f.sonar[0].beacon_id = 6;
-                      append(out, encode_one(f));
+                      append(out, encode_frame(f));
                     }),
                     {{Status::kOutOfRange, 1}}, n, 0});
 
   // Corrupted bytes: one payload byte flipped in 3 frames (CRC fails), and
   // 7 bytes of line noise before another frame: the assembler reports the
   // noise once (kBadMagic, one more Runner frame) and resyncs.
-  faults.push_back({"corrupted bytes in 4 frames", each([&](std::size_t k, const kestrel::hal::Frame& f, Bytes& out) {
-                      Bytes b = encode_one(f);
-                      if (k == kFaultAt || k == kFaultAt + 10 || k == kFaultAt + 11) {
-                        b[kestrel::hal::wire::kHeaderSize + 5] ^= 0x40u;
-                      }
-                      if (k == kFaultAt + 20) append(out, Bytes{0x4B, 0x53, 0x00, 0xFF, 0x4B, 0x53, 0x54});
-                      append(out, b);
-                    }),
+  faults.push_back({"corrupted bytes in 4 frames", corrupt_frames(run.frames, {kFaultAt, kFaultAt + 10, kFaultAt + 11}, kFaultAt + 20),
                     {{Status::kBadCrc, 3}, {Status::kBadMagic, 1}}, n + 1, 0});
   return faults;
 }
@@ -198,8 +156,7 @@ SCENARIO("injected sonar stream faults give their status counts, keep or restart
   for (const Fault& fault : faults) {
     INFO("fault: " << fault.name);
     const Observed o = observe(run_uw_stream(fault.stream, params, 1'000'000'000));
-    std::string seen;
-    for (const auto& [status, count] : o.not_ok) seen += std::string(kestrel::to_string(status)) + " " + std::to_string(count) + "; ";
+    const std::string seen = kestrel::test::faults::describe(o.not_ok);
     const double moved = std::hypot(o.final_position[0] - clean.final_position[0],
                                     o.final_position[1] - clean.final_position[1],
                                     o.final_position[2] - clean.final_position[2]);
