@@ -34,16 +34,8 @@ namespace {
 constexpr std::size_t kFaultAt = 60;  // frame index where each fault starts (t = 30 s)
 constexpr std::int64_t kSecondUs = 1'000'000;
 
-using kestrel::test::faults::append;
-using kestrel::test::faults::Bytes;
-using kestrel::test::faults::corrupt_frames;
-using kestrel::test::faults::drop_frames;
-using kestrel::test::faults::each_frame;
-using kestrel::test::faults::encode_frame;
-using kestrel::test::faults::repeat_frames;
-using kestrel::test::faults::send_all;
-using kestrel::test::faults::shift_times;
-using Fault = kestrel::test::faults::WireFault;
+using namespace kestrel::test::faults;  // NOLINT(google-build-using-namespace): the stream builders
+using Fault = WireFault;
 
 std::vector<Fault> make_faults(const PclScenarioRun& run) {
   const std::size_t n = run.frames.size();
@@ -169,7 +161,7 @@ SCENARIO("injected PCL stream faults give their status counts, hold the drone an
   for (const Fault& fault : faults) {
     INFO("fault: " << fault.name);
     const Observed o = run_stream(fault.stream);
-    const std::string seen = kestrel::test::faults::describe(o.not_ok);
+    const std::string seen = describe(o.not_ok);
     INFO("statuses other than kOk: " << seen << "drone tracks " << o.drone_tracks.size() << ", false tracks "
                                      << o.false_tracks << " (clean run " << clean.false_tracks
                                      << "), last drone track took " << o.end_rate

@@ -32,16 +32,8 @@ namespace {
 constexpr std::size_t kFaultAt = 20;  // frame index where each fault starts (t = 20 s)
 constexpr std::int64_t kSecondUs = 1'000'000;
 
-using kestrel::test::faults::append;
-using kestrel::test::faults::Bytes;
-using kestrel::test::faults::corrupt_frames;
-using kestrel::test::faults::drop_frames;
-using kestrel::test::faults::each_frame;
-using kestrel::test::faults::encode_frame;
-using kestrel::test::faults::repeat_frames;
-using kestrel::test::faults::send_all;
-using kestrel::test::faults::shift_times;
-using Fault = kestrel::test::faults::WireFault;
+using namespace kestrel::test::faults;  // NOLINT(google-build-using-namespace): the stream builders
+using Fault = WireFault;
 
 std::vector<Fault> make_faults(const UwScenarioRun& run) {
   const std::size_t n = run.frames.size();
@@ -156,7 +148,7 @@ SCENARIO("injected sonar stream faults give their status counts, keep or restart
   for (const Fault& fault : faults) {
     INFO("fault: " << fault.name);
     const Observed o = observe(run_uw_stream(fault.stream, params, 1'000'000'000));
-    const std::string seen = kestrel::test::faults::describe(o.not_ok);
+    const std::string seen = describe(o.not_ok);
     const double moved = std::hypot(o.final_position[0] - clean.final_position[0],
                                     o.final_position[1] - clean.final_position[1],
                                     o.final_position[2] - clean.final_position[2]);
