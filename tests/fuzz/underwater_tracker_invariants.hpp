@@ -23,10 +23,13 @@
 // After every frame:
 //   - the adapter refused (kMalformedFrame) exactly the frames whose kept
 //     arrivals carry a path code that is not a path, else kept min(count, 8);
-//   - a stepped frame that the tracker refuses leaves its state, filter
-//     diagnostics and counters as they were (only the refused status's
-//     counter moves) and reports nothing; an accepted one reports once, at
-//     the frame time;
+//   - a stepped frame that the tracker refuses reports nothing and moves
+//     only the refused status's counter; refused for its content or time
+//     (kMalformedFrame, kOutOfRange, kTimeWentBackwards,
+//     kTimeJumpedForward), it leaves the state and filter diagnostics as
+//     they were; refused because no track could start or hold (a fix's or
+//     a filter's status), it leaves no track held; an accepted one reports
+//     once, at the frame time;
 //   - every report and the held state are finite with a positive definite
 //     covariance.
 #pragma once
@@ -163,7 +166,14 @@ const char* check_underwater_tracker_invariants_for(std::span<const std::uint8_t
     tally.reports += static_cast<int>(tracker->reports().size());
     if (s != Status::kOk) {
       if (!tracker->reports().empty()) return "a refused frame published reports";
-      if (!same_underwater_state(*tracker, *before)) return "a refused frame changed the tracker";
+      if (!same_underwater_state(*tracker, *before)) {
+        // kNonFinite is a frame check (an arrival time) and a filter status.
+        if (s == Status::kMalformedFrame || s == Status::kOutOfRange || s == Status::kTimeWentBackwards ||
+            s == Status::kTimeJumpedForward) {
+          return "a frame refused for its content or time changed the tracker";
+        }
+        if (tracker->initialised()) return "a frame refused for its fix or filter still holds a track";
+      }
       const auto idx = static_cast<std::size_t>(s);
       for (std::size_t j = 0; j < kStatusCount; ++j) {
         const std::uint32_t rise = tracker->counters().rejected[j] - before->counters().rejected[j];

@@ -155,6 +155,24 @@ TEMPLATE_TEST_CASE("Scenario: a dropout longer than max_predict_us restarts the 
   }
 }
 
+TEMPLATE_TEST_CASE("Scenario: a stale track frees its slot before the frame's plots start tracks", "[tracker][time]",
+                   double, float) {
+  // One slot: the plot after the dropout can only start a track if the
+  // stale track is deleted before the unused plots are seeded.
+  kestrel::RadarTrackerParams p;
+  p.qj = 16.0;
+  auto tracker = kestrel::make_radar_tracker<TestType, 1, 8>(p);
+  using T = decltype(tracker);
+  for (int k = 0; k < 6; ++k) REQUIRE(tracker.step(plot_scan<T>(k * kFrameUs, 0.5 * k)) == Status::kOk);
+  REQUIRE(tracker.reports().size() == 1);
+  REQUIRE(tracker.step(plot_scan<T>(5 * kFrameUs + 60'000'000, 2.5 + 60.0)) == Status::kOk);
+  CHECK(tracker.last_step().stale == 1);
+  CHECK(tracker.last_step().deleted == 1);
+  CHECK(tracker.last_step().seeded == 1);
+  CHECK(tracker.last_step().dropped == 0);
+  CHECK(tracker.tracks().size() == 1);
+}
+
 namespace {
 
 /// EKF-CA whose predict can be made to report a P that is not positive

@@ -557,3 +557,50 @@ SCENARIO("the sonar adapter turns wire frames into TOA scans", "[uw][hal]") {
     }
   }
 }
+
+SCENARIO("the composed sonar tracker checks only the channels a frame carries", "[uw][tracker][status]") {
+  // UnderwaterTracker is Tracker<ChannelGatedEkf, MultilaterationInitiator,
+  // 1, 1, LabelledAssociation, ReacquireWhenLost> over one ChannelScan entry.
+  using Core = Tracker::Core;
+  Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+  Core core = tr.core();
+  const Scan full = frame_at(0);
+  Core::Scan s;
+  s.t_us = full.t_us;
+  s.count = 1;
+  s.z[0].setConstant(std::numeric_limits<double>::quiet_NaN());  // absent channels are never read
+  for (std::size_t i = 0; i < full.count; ++i) {
+    const auto& a = full.arrivals[i];
+    if (a.path != ArrivalPath::kDirect) continue;
+    const int ch = Tracker::Toa::channel(a.beacon, a.path);
+    s.z[0](ch) = a.toa_s;
+    s.present[0] |= ChannelMask{1} << ch;
+  }
+  WHEN("the four direct arrivals are present and the rest NaN") {
+    REQUIRE(core.step(s) == Status::kOk);
+    THEN("a track starts from their fix, confirmed, fusing exactly them") {
+      REQUIRE(core.reports().size() == 1);
+      CHECK(core.reports()[0].fusion.fused_channels == s.present[0]);
+      CHECK(core.last_step().seeded == 1);
+    }
+  }
+  WHEN("a present channel is NaN") {
+    s.z[0](Tracker::Toa::channel(2, ArrivalPath::kDirect)) = std::numeric_limits<double>::quiet_NaN();
+    CHECK(core.step(s) == Status::kNonFinite);
+    CHECK(core.tracks().size() == 0);
+  }
+  WHEN("the mask names a channel the model does not have") {
+    s.present[0] |= ChannelMask{1} << 8;
+    CHECK(core.step(s) == Status::kMalformedFrame);
+    CHECK(core.tracks().size() == 0);
+  }
+  WHEN("three arrivals cannot fix the position") {
+    s.present[0] &= ~(ChannelMask{1} << Tracker::Toa::channel(3, ArrivalPath::kDirect));
+    REQUIRE(core.step(s) == Status::kOk);
+    THEN("the frame is taken, no track starts and the step says why") {
+      CHECK(core.reports().empty());
+      CHECK(core.last_step().failure == Status::kUnderdetermined);
+      CHECK(core.initiator().last_fix().status == Status::kUnderdetermined);
+    }
+  }
+}

@@ -16,11 +16,20 @@
 //     channel with the largest |nu_i| / sqrt(S_ii) and test again (at most
 //     kMeasDim rounds).
 //
+// The filter's own configured step, update_channels(z, present) (what a
+// Tracker calls with a frame of ChannelScan), runs the configured gate, then
+// two corrections a gate needs (both off by default):
+//   widen_for_dropped: a channel the per-channel gate dropped widens P along
+//     its direction (add_gate_truncation());
+//   bound: one state component is kept within [lo, hi] by projection
+//     (constrain(); the sonar keeps the depth in the water).
+//
 // Same contract as Ekf: kNonFinite / kNotPositiveDefinite leave x and P
 // unchanged. update(z) with every channel makes it a drop-in TrackingFilter;
 // with all channels present and no gate it is Ekf's dense update.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "kestrel/association/chi_square.hpp"
@@ -41,6 +50,17 @@ struct ChannelGateConfig {
   Scalar k_sigma = lit<Scalar>(2.0);  ///< k, the per-channel gate multiplier (2 in the paper).
   bool ellipsoidal = false;     ///< Also test the kept set on nu^T S^-1 nu (peeling the worst channel).
   GateProbability ellipsoid_probability = GateProbability::k99;  ///< Chi-square probability of that test.
+  /// update_channels(): widen P for the channels the per-channel gate
+  /// dropped (add_gate_truncation()).
+  bool widen_for_dropped = false;
+};
+
+/// A box on one state component, kept by projection (constrain()).
+template <class Scalar>
+struct StateBound {
+  int index = -1;  ///< State component; -1: no bound.
+  Scalar lo{};     ///< Smallest value.
+  Scalar hi{};     ///< Largest value.
 };
 
 template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
@@ -65,7 +85,22 @@ class ChannelGatedEkf {
   static constexpr ChannelMask kAllChannels = all_channels(kMeasDim);
 
   ChannelGatedEkf() : ChannelGatedEkf(Motion{}, Measurement{}) {}
-  ChannelGatedEkf(const Motion& motion, const Measurement& measurement) : ekf_(motion, measurement) {}
+  /// @param gate  the gate of update_channels() (update_gated() takes its own).
+  /// @param bound the state bound of update_channels() and constrain().
+  ChannelGatedEkf(const Motion& motion, const Measurement& measurement, const GateConfig& gate = GateConfig{},
+                  const StateBound<Scalar>& bound = StateBound<Scalar>{})
+      : ekf_(motion, measurement), gate_(gate), bound_(bound) {
+    if (gate.per_channel && gate.widen_for_dropped) {
+      // Once, in double: tail = Pr(|u| > k) = erfc(k / sqrt 2) for
+      // u ~ N(0, 1) and excess = E[u^2 | |u| > k] - 1 = k phi(k) / Q(k),
+      // Q(k) = tail / 2 (0.0455 and 4.75 at k = 2; 0.0027 and 9.85 at k = 3).
+      const double k = ScalarTraits<Scalar>::to_double(gate.k_sigma);
+      const double tail = std::erfc(k / std::sqrt(2.0));
+      const double phi = std::exp(-0.5 * k * k) / std::sqrt(2.0 * 3.14159265358979323846);
+      gate_tail_ = ScalarTraits<Scalar>::from_double(tail);
+      gate_excess_ = ScalarTraits<Scalar>::from_double(tail > 0.0 ? 2.0 * k * phi / tail : 0.0);
+    }
+  }
 
   /// Set the state and covariance (Ekf::reset).
   [[nodiscard]] Status reset(const State& x, const Cov& P) { return ekf_.reset(x, P); }
@@ -96,6 +131,64 @@ class ChannelGatedEkf {
     none.per_channel = false;
     none.ellipsoidal = false;
     return update_gated(z, present, none, ekf_.measurement().noise());
+  }
+
+  /// The configured step: gate the `present` channels of z with the
+  /// constructor's gate, update with the ones that pass, widen P for what
+  /// the per-channel gate dropped (if configured), then constrain().
+  /// @return kOk (also when nothing was fused: diagnostics().fused);
+  ///         kNonFinite or kNotPositiveDefinite (filter and totals unchanged).
+  [[nodiscard]] Status update_channels(const MeasVec& z, ChannelMask present) {
+    const ChannelGatedEkf before = *this;
+    const State x_pred = x();
+    Status s = update_gated(z, present, gate_);
+    const ChannelMask dropped = dropped_by_channel_gate();
+    if (s == Status::kOk && gate_.widen_for_dropped && dropped != 0) {
+      s = add_gate_truncation(x_pred, dropped, channel_count(present & kAllChannels));
+    }
+    if (s == Status::kOk) s = constrain();
+    if (s != Status::kOk) {
+      const Diagnostics d = diag_;
+      *this = before;
+      diag_ = d;
+      return fail(s);
+    }
+    offered_ += static_cast<std::uint32_t>(channel_count(diag_.present));
+    dropped_ += static_cast<std::uint32_t>(channel_count(diag_.rejected));
+    return Status::kOk;
+  }
+
+  /// Record channels that were present but refused before the update (a
+  /// multilateration's outliers): they show as present and rejected in
+  /// diagnostics() and count in the gate's totals as dropped.
+  void note_refused(ChannelMask present, ChannelMask refused) {
+    present &= kAllChannels;
+    refused &= present;
+    diag_.present |= present;
+    diag_.rejected |= refused;
+    offered_ += static_cast<std::uint32_t>(channel_count(present));
+    dropped_ += static_cast<std::uint32_t>(channel_count(refused));
+  }
+
+  /// Project the state onto the bound, if it is outside: x -= P e (e^T x -
+  /// b) / P_ee, e the bounded axis (the estimate projection of a linear
+  /// inequality constraint, which moves the correlated components too); P
+  /// is kept, which is conservative. The sonar's use: a linearised update
+  /// can put the target above the surface, at the mirror image the direct
+  /// arrivals cannot tell apart.
+  /// @return kOk; kNotPositiveDefinite (P_ee not positive; unchanged).
+  [[nodiscard]] Status constrain() {
+    if (bound_.index < 0 || bound_.index >= kStateDim) return Status::kOk;
+    const int e = bound_.index;
+    const Scalar v = x()(e);
+    if (!(v < bound_.lo) && !(v > bound_.hi)) return Status::kOk;
+    const Scalar b = v < bound_.lo ? bound_.lo : bound_.hi;
+    const Cov& P = this->P();
+    const Scalar pee = P(e, e);
+    if (!(pee > Scalar(0))) return Status::kNotPositiveDefinite;
+    State xc = x() - P.col(e) * ((v - b) / pee);
+    xc(e) = b;  // exact, whatever the rounding
+    return ekf_.reset(xc, P);
   }
 
   /// Gate the `present` channels of z (header comment) and update with the
@@ -181,8 +274,57 @@ class ChannelGatedEkf {
   const Diagnostics& diagnostics() const { return diag_; }
   /// The EKF that does the arithmetic.
   const Base& ekf() const { return ekf_; }
+  const GateConfig& gate() const { return gate_; }
+  const StateBound<Scalar>& bound() const { return bound_; }
+  /// Channels offered to update_channels() (and note_refused()) so far, and
+  /// of them dropped: the gate's running totals.
+  std::uint32_t channels_offered() const { return offered_; }
+  std::uint32_t channels_dropped() const { return dropped_; }
 
  private:
+  /// The channels the per-channel gate dropped in the last update (its
+  /// test ratio over 1), not those the ellipsoidal gate peeled.
+  ChannelMask dropped_by_channel_gate() const {
+    ChannelMask m = 0;
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (has_channel(diag_.rejected, i) && diag_.test_ratio(i) > Scalar(1)) m = with_channel(m, i);
+    }
+    return m;
+  }
+
+  /// The per-channel gate drops channel i when |nu_i| > k sqrt(S_ii) and the
+  /// update then treats it as never received. But had the arrival been a
+  /// good one, the truth lies where channel i's innovation is beyond k sigma:
+  /// with u = nu_i / sqrt(S_ii) ~ N(0, 1), E[u^2 | |u| > k] = 1 + excess
+  /// (5.75 at k = 2), so along g = P h_i^T the spread is larger than P says
+  /// by excess g g^T / s_i, s_i = h_i P h_i^T + R_ii. That term is added,
+  /// with P the covariance after the update with the kept channels (an
+  /// approximation: the gate tested the predicted innovation) and h_i at the
+  /// predicted state, weighted by the probability that a dropped channel is
+  /// good, Pr(good, dropped) / Pr(dropped) <= tail / (dropped fraction so
+  /// far, this frame included) (1 when nothing but noise is dropped, about
+  /// 0.45 with 5 % outliers), capped at 1. The mean is left alone (a
+  /// two-sided gate says nothing about the sign). The kept channels need no
+  /// correction: the update conditions on their values.
+  Status add_gate_truncation(const State& x_pred, ChannelMask dropped, int offered_now) {
+    const auto H = ekf_.measurement().jacobian(x_pred);
+    const auto R = ekf_.measurement().noise();
+    const std::int64_t offered = static_cast<std::int64_t>(offered_) + offered_now;
+    const std::int64_t gated = static_cast<std::int64_t>(dropped_) + channel_count(dropped);
+    Scalar good = gate_tail_ * ScalarTraits<Scalar>::from_ratio(offered, gated);
+    if (good > Scalar(1)) good = Scalar(1);
+    const Scalar w = good * gate_excess_;
+    const Cov& P = ekf_.P();
+    Cov widened = P;
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (!has_channel(dropped, i)) continue;
+      const State g = P * H.row(i).transpose();
+      const Scalar s_i = H.row(i).dot(g) + R(i, i);
+      widened += (w / s_i) * (g * g.transpose());
+    }
+    return ekf_.reset(ekf_.x(), widened);
+  }
+
   Status fail(Status s) {
     diag_.status = s;
     diag_.fused_channels = 0;
@@ -192,6 +334,12 @@ class ChannelGatedEkf {
 
   Base ekf_;
   Diagnostics diag_{};
+  GateConfig gate_{};
+  StateBound<Scalar> bound_{};
+  Scalar gate_tail_{};          ///< Pr(|u| > k), u ~ N(0, 1), k = gate_.k_sigma.
+  Scalar gate_excess_{};        ///< E[u^2 | |u| > k] - 1.
+  std::uint32_t offered_ = 0;   ///< Channels offered to the gate so far.
+  std::uint32_t dropped_ = 0;   ///< Of them dropped (by a gate or note_refused()).
 };
 
 }  // namespace kestrel

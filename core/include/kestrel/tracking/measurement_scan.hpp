@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "kestrel/filters/channels.hpp"
 #include "kestrel/math/eigen.hpp"
 
 namespace kestrel {
@@ -20,6 +21,15 @@ struct MeasurementScan {
   std::int64_t t_us = 0;    ///< Measurement time, microseconds (sensor clock).
   std::size_t count = 0;    ///< Valid entries in z; step() refuses count > kCapacity.
   MeasVec z[kCapacity]{};   ///< Measurements, model units (e.g. [range_m, bearing_rad]).
+};
+
+/// A frame whose measurements carry only some channels of the measurement
+/// vector each: a sonar frame is one measurement whose channels are the
+/// (beacon, path) arrivals that came. Channels outside present[i] are not
+/// read. The tracker of a ChannelFilter takes this scan.
+template <class Scalar, int kMeasDim, std::size_t kCapacity>
+struct ChannelScan : MeasurementScan<Scalar, kMeasDim, kCapacity> {
+  ChannelMask present[kCapacity]{};  ///< Channels z[i] carries.
 };
 
 }  // namespace kestrel

@@ -16,6 +16,10 @@ enum class TrackVerdict : std::uint8_t {
   kKeep,     ///< Nothing changes.
   kConfirm,  ///< A tentative track becomes confirmed.
   kDelete,   ///< The track is deleted.
+  /// The track is lost: start it again from the plot it took this frame,
+  /// with the initiator, if that start fuses more of the plot than the
+  /// track did (a new id; otherwise it is kept as it is).
+  kRestart,
 };
 
 template <class Filter>
@@ -34,7 +38,11 @@ struct Track {
   std::uint16_t misses = 0;            ///< Consecutive frames without a measurement.
   std::uint8_t history = 0;            ///< Association history, bit 0 = latest frame.
   bool associated = false;             ///< A measurement was used in the latest frame.
-  std::int16_t measurement_index = -1; ///< Its index in the latest scan, -1 if none.
+  /// Index in the latest scan of the measurement the track took, -1 if
+  /// none (a channel filter may take one and fuse none of its channels:
+  /// then `associated` is false).
+  std::int16_t measurement_index = -1;
+  std::uint16_t lost_frames = 0;       ///< Frames in a row a manager judged lost (ReacquireWhenLost); fills padding.
   Scalar nis{};                        ///< nu^T S^-1 nu of the latest association, as the gate tested it.
   Scalar test_ratio{};                 ///< nis / association gate threshold (<= 1 inside).
   Scalar score{};                      ///< Track score of a score-based manager (SequentialLlr), 0 otherwise.
@@ -56,7 +64,7 @@ struct TrackReport {
   std::uint16_t hits = 0;              ///< Measurements associated in total.
   std::uint16_t misses = 0;            ///< Consecutive misses.
   bool associated = false;             ///< Updated in this frame.
-  std::int16_t measurement_index = -1; ///< Scan entry used in this frame, -1 if none.
+  std::int16_t measurement_index = -1; ///< Scan entry taken in this frame, -1 if none (see Track).
   /// NIS of the latest association (this frame's if associated) as the
   /// association gate tested it: nu^T S^-1 nu with the S predicted before
   /// the plot was seen, the predictive consistency test.

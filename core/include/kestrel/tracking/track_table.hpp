@@ -54,6 +54,12 @@ class TrackTable {
     return kCapacity;
   }
 
+  /// Give the track in slot i the next id (a restart: the same slot, a new track).
+  void renew_id(std::size_t i) {
+    slots_[i].id = next_id_;
+    next_id_ = next_id_ == UINT32_MAX ? 1u : next_id_ + 1u;
+  }
+
   void release(std::size_t i) {
     slots_[i].status = TrackStatus::kFree;
     mask_[i / 64] &= ~bit(i);

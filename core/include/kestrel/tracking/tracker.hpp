@@ -7,15 +7,21 @@
 // Composed at compile time of
 //   Filter       the estimator of every track (TrackingFilter);
 //   Initiator    how a track starts: two-point (a seed, then a pair) or
-//                single-point (kSinglePoint);
+//                single-point (kSinglePoint), which may start the filter
+//                itself (a multilateration fix and its update, start());
 //   Associator   who takes which measurement, over the gated pairs
 //                (NearestNeighbour, GlobalNearestNeighbour,
 //                ProbabilisticDataAssociation);
-//   Manager      when a track is confirmed or deleted (MOfN,
-//                SequentialLlr);
+//   Manager      when a track is confirmed, deleted or restarted (MOfN,
+//                SequentialLlr, ReacquireWhenLost);
 //   capacities   kMaxTracks and kMaxMeasurements.
 // The tracker keeps what they share: validation, time, the gates, the
 // track table, the health rules below, statistics and reports.
+// A filter that fuses part of a measurement (ChannelFilter: the sonar's
+// channel-gated EKF) takes a ChannelScan, whose measurements say which
+// channels they carry; validation reads those only, and the filter's own
+// update_channels() decides what it fuses (a track that fuses nothing of
+// the plot it took is not hit).
 // Work is bounded by the capacities: kMaxTracks x kMaxMeasurements plot
 // distances per frame at most (per pair a residual and one forward
 // substitution when the filter predicts its measurement once per track,
@@ -37,8 +43,9 @@
 // would not be positive definite loses its track, as does a track whose
 // variances are not positive and finite, or one that would be predicted
 // over more than config.max_predict_us (a dropout): extrapolating that far
-// gives a P no plot can be folded into soundly in float. Its plots are free
-// to start a new track.
+// gives a P no plot can be folded into soundly in float. A track that cannot
+// be predicted to the frame is deleted before association, so its plots
+// (and its slot) are free to start a new track in the same frame.
 #pragma once
 
 #include <concepts>
@@ -50,6 +57,7 @@
 #include "kestrel/association/chi_square.hpp"
 #include "kestrel/association/gate.hpp"
 #include "kestrel/association/nearest_neighbour.hpp"
+#include "kestrel/filters/channels.hpp"
 #include "kestrel/math/finite.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
@@ -74,6 +82,24 @@ concept TrackingFilter = requires(F& f, const F& cf, const typename F::State& x,
   { cf.x() } -> std::convertible_to<typename F::State>;
   { cf.P() } -> std::convertible_to<typename F::Cov>;
   { cf.diagnostics() } -> std::convertible_to<FusionDiagnostics<typename F::Scalar, F::kMeasDim>>;
+};
+
+/// A filter that fuses the channels of a measurement it is given and chooses
+/// among them itself (ChannelGatedEkf): the tracker then takes a
+/// ChannelScan and calls update_channels() instead of update().
+template <class F>
+concept ChannelFilter = requires(F& f, const F& cf, const typename F::MeasVec& z, ChannelMask m) {
+  { cf.innovation(z, m) } -> std::same_as<Innovation<typename F::Scalar, F::kMeasDim>>;
+  { f.update_channels(z, m) } -> std::same_as<Status>;
+};
+
+/// A single-point initiator that starts the track's filter itself (reset
+/// and, e.g., an update with the plot's inliers) instead of handing out x
+/// and P: the filter is a copy of the tracker's prototype (or, on a
+/// restart, of the track's own filter).
+template <class I, class F>
+concept FilterStartingInitiator = requires(I& i, F& f, const typename F::MeasVec& z, ChannelMask m) {
+  { i.start(f, z, m) } -> std::same_as<Status>;
 };
 
 /// A filter that hands out what every plot is measured against (Ekf: h(x)
@@ -139,7 +165,11 @@ struct StepStats {
   std::uint16_t filter_failures = 0;  ///< Predict/update refused by a filter.
   std::uint16_t stale = 0;      ///< Deleted: predict gap over max_predict_us (also in `deleted`).
   std::uint16_t unhealthy = 0;  ///< Deleted: P not positive definite, or a variance not positive and finite (also in `deleted`).
+  std::uint16_t restarted = 0;  ///< Lost tracks started again from their plot (TrackVerdict::kRestart).
   bool resynced = false;        ///< The tracker restarted on this frame's clock (tracks deleted first).
+  /// The first status a filter or the initiator refused with in this frame
+  /// (kOk: none), e.g. kUnderdetermined from a multilateration initiator.
+  Status failure = Status::kOk;
 };
 
 template <TrackingFilter Filter, class Initiator, std::size_t kMaxTracks, std::size_t kMaxMeasurements,
@@ -151,7 +181,9 @@ class Tracker {
   static constexpr int kMeasDim = Filter::kMeasDim;
   using MeasVec = typename Filter::MeasVec;
   using Innov = Innovation<Scalar, kMeasDim>;
-  using Scan = MeasurementScan<Scalar, kMeasDim, kMaxMeasurements>;
+  /// A ChannelScan for a ChannelFilter, a MeasurementScan otherwise.
+  using Scan = std::conditional_t<ChannelFilter<Filter>, ChannelScan<Scalar, kMeasDim, kMaxMeasurements>,
+                                  MeasurementScan<Scalar, kMeasDim, kMaxMeasurements>>;
   using TrackT = Track<Filter>;
   using Report = TrackReport<Filter>;
   using Table = TrackTable<TrackT, kMaxTracks>;
@@ -210,11 +242,15 @@ class Tracker {
     /// (PlotDistance, or the whole Innovation where that is what it cost.)
     template <class TrackSide>
     auto distance(const TrackSide& track, std::size_t j) const {
-      return track.distance(scan_.z[j]);
+      if constexpr (PredictsMeasurement<Filter>) {
+        return track.distance(scan_.z[j]);
+      } else {
+        return track.distance(scan_.z[j], channels_of(scan_, j));
+      }
     }
     /// The innovation of measurement j against track k (pure).
     Innov innovation(std::size_t k, std::size_t j) const {
-      return tracker_.table_[slot_[k]].filter.innovation(scan_.z[j]);
+      return innovation_of(tracker_.table_[slot_[k]].filter, scan_, j);
     }
     bool gated(const PlotDistance<Scalar>& d) const { return gate_.accepts(d); }
     bool gated(const Innov& in) const { return gate_.accepts(in); }
@@ -225,8 +261,11 @@ class Tracker {
     /// Update track k with measurement j. On success j is used and k is
     /// hit; if the filter refuses, both stay open.
     void assign(std::size_t k, std::size_t j) {
-      tracker_.fold_in(slot_[k], scan_, j, tracker_.table_[slot_[k]].filter.innovation(scan_.z[j]), gate_, used_,
-                       hit_, drop_);
+      if constexpr (ChannelFilter<Filter>) {  // the filter's own gate tests it; no association test
+        tracker_.fold_in(slot_[k], scan_, j, Innov{}, gate_, used_, hit_, drop_);
+      } else {
+        tracker_.fold_in(slot_[k], scan_, j, innovation(k, j), gate_, used_, hit_, drop_);
+      }
     }
     /// The same with `d` = distance(track(k), j): an innovation (a filter
     /// gated through innovation()) is used as is; a PlotDistance costs one
@@ -253,7 +292,14 @@ class Tracker {
     friend class Tracker;
     struct ThroughInnovation {
       const Filter* filter;
-      Innov distance(const MeasVec& z) const { return filter->innovation(z); }
+      Innov distance(const MeasVec& z, ChannelMask present) const {
+        if constexpr (ChannelFilter<Filter>) {
+          return filter->innovation(z, present);
+        } else {
+          (void)present;
+          return filter->innovation(z);
+        }
+      }
     };
     AssociationCandidates(Tracker& tracker, const Scan& scan, const EllipsoidalGate<Scalar, kMeasDim>& gate,
                           Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
@@ -306,11 +352,12 @@ class Tracker {
     bool drop[kMaxTracks] = {};
 
     predict_all(scan.t_us, existed, drop);
+    release_unpredicted(existed, drop);
     associate(scan, TrackStatus::kConfirmed, gate_confirmed_, gate_probability_confirmed_, used, hit, drop);
     associate(scan, TrackStatus::kTentative, gate_tentative_, gate_probability_tentative_, used, hit, drop);
     initiate_from_seeds(scan, used, hit);
     seed_new(scan, used, hit);
-    manage(existed, hit, drop);
+    manage(scan, existed, hit, drop);
     build_reports(scan.t_us);
     return Status::kOk;
   }
@@ -321,6 +368,7 @@ class Tracker {
   const StepStats& last_step() const { return stats_; }
   const Table& tracks() const { return table_; }
   const Config& config() const { return config_; }
+  const Initiator& initiator() const { return initiator_; }
   /// Frames refused so far, per status.
   std::uint32_t rejected(Status s) const { return rejected_[static_cast<std::size_t>(s)]; }
   /// Restarts on a new clock so far (header comment).
@@ -328,21 +376,65 @@ class Tracker {
 
  private:
   /// The frame's content: count, finiteness, measurement box.
+  /// A ChannelScan: the present channels only (a channel the filter does
+  /// not have is kMalformedFrame).
   Status validate(const Scan& scan) const {
     if (scan.count > kMaxMeasurements) return Status::kMalformedFrame;
-    for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
-      if (i >= scan.count) break;
-      if (!all_finite(scan.z[i])) return Status::kNonFinite;
+    if constexpr (ChannelFilter<Filter>) {
+      for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
+        if (i >= scan.count) break;
+        if ((scan.present[i] & ~all_channels(kMeasDim)) != 0) return Status::kMalformedFrame;
+      }
     }
     for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
       if (i >= scan.count) break;
+      const ChannelMask present = channels_of(scan, i);
       for (int c = 0; c < kMeasDim; ++c) {
+        if (has_channel(present, c) && !ScalarTraits<Scalar>::is_finite(scan.z[i](c))) return Status::kNonFinite;
+      }
+    }
+    for (std::size_t i = 0; i < kMaxMeasurements; ++i) {
+      if (i >= scan.count) break;
+      const ChannelMask present = channels_of(scan, i);
+      for (int c = 0; c < kMeasDim; ++c) {
+        if (!has_channel(present, c)) continue;
         if (scan.z[i](c) < config_.z_min(c) || scan.z[i](c) > config_.z_max(c)) {
           return Status::kOutOfRange;
         }
       }
     }
     return Status::kOk;
+  }
+
+  /// The channels measurement j carries (all of them in a MeasurementScan).
+  static ChannelMask channels_of(const Scan& scan, std::size_t j) {
+    if constexpr (ChannelFilter<Filter>) {
+      return scan.present[j] & all_channels(kMeasDim);
+    } else {
+      (void)scan;
+      (void)j;
+      return all_channels(kMeasDim);
+    }
+  }
+
+  static Innov innovation_of(const Filter& f, const Scan& scan, std::size_t j) {
+    if constexpr (ChannelFilter<Filter>) {
+      return f.innovation(scan.z[j], channels_of(scan, j));
+    } else {
+      return f.innovation(scan.z[j]);
+    }
+  }
+
+  static Status update_of(Filter& f, const Scan& scan, std::size_t j) {
+    if constexpr (ChannelFilter<Filter>) {
+      return f.update_channels(scan.z[j], channels_of(scan, j));
+    } else {
+      return f.update(scan.z[j]);
+    }
+  }
+
+  void note_failure(Status s) {
+    if (stats_.failure == Status::kOk) stats_.failure = s;
   }
 
   /// The resync rule took a new clock: no track's time means anything on it.
@@ -386,6 +478,7 @@ class Tracker {
       const Status s = tr.filter.predict(seconds(gap_us));
       if (s != Status::kOk) {
         ++stats_.filter_failures;
+        note_failure(s);
         if (s == Status::kNotPositiveDefinite) {
           drop[i] = true;
           ++stats_.unhealthy;
@@ -393,6 +486,19 @@ class Tracker {
         continue;  // otherwise a miss in manage(); deleted if it keeps failing
       }
       tr.t_us = t_us;
+    }
+  }
+
+  /// Tracks marked to drop while predicting (stale, or a P the filter
+  /// refused) are deleted now, before association: their slots and the
+  /// plots they would have taken are free for new tracks in this frame.
+  void release_unpredicted(bool (&existed)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+    for (const std::size_t i : table_.active_slots()) {
+      if (!drop[i]) continue;
+      table_.release(i);
+      ++stats_.deleted;
+      existed[i] = false;
+      drop[i] = false;
     }
   }
 
@@ -418,8 +524,9 @@ class Tracker {
                bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
     TrackT& tr = table_[slot];
-    if (const Status s = tr.filter.update(scan.z[j]); s != Status::kOk) {
+    if (const Status s = update_of(tr.filter, scan, j); s != Status::kOk) {
       ++stats_.filter_failures;
+      note_failure(s);
       if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
         drop[slot] = true;
         ++stats_.unhealthy;
@@ -427,11 +534,19 @@ class Tracker {
       return;
     }
     used[j] = true;
+    tr.measurement_index = static_cast<std::int16_t>(j);
+    if constexpr (ChannelFilter<Filter>) {
+      // The filter's gate was the test: its NIS over what it fused. A plot
+      // the track took but fused none of is not a hit.
+      tr.nis = tr.filter.diagnostics().nis;
+      tr.test_ratio = Scalar(0);
+      if (!tr.filter.diagnostics().fused) return;
+    } else {
+      tr.nis = in.d2;
+      tr.test_ratio = in.d2 / gate.threshold;
+    }
     hit[slot] = true;
     tr.associated = true;
-    tr.measurement_index = static_cast<std::int16_t>(j);
-    tr.nis = in.d2;
-    tr.test_ratio = in.d2 / gate.threshold;
     manager_.hit(tr, in);
     ++stats_.associated;
   }
@@ -458,6 +573,7 @@ class Tracker {
     const Innov in = tr.filter.innovation(z[best]);  // before the update: the manager scores it
     if (const Status s = tr.filter.update_pda(z, beta, n, beta_none); s != Status::kOk) {
       ++stats_.filter_failures;
+      note_failure(s);
       if (s == Status::kNotPositiveDefinite) {
         drop[slot] = true;
         ++stats_.unhealthy;
@@ -527,20 +643,46 @@ class Tracker {
   /// initiator, an initialised tentative track). A single-point initiator
   /// runs before a slot is taken, so a measurement it refuses (kOutOfRange,
   /// e.g. the PCL zero-Doppler veto) costs no slot and no track id.
+  struct NoFilter {};
+  /// The filter a FilterStartingInitiator starts before a slot is taken.
+  using StartedFilter = std::conditional_t<FilterStartingInitiator<Initiator, Filter>, Filter, NoFilter>;
+  static StartedFilter started_from(const Filter& prototype) {
+    if constexpr (FilterStartingInitiator<Initiator, Filter>) {
+      return prototype;
+    } else {
+      (void)prototype;
+      return NoFilter{};
+    }
+  }
+
   void seed_new(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
     for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
       if (j >= scan.count) break;
       if (used[j]) continue;
       typename Filter::State x;
       typename Filter::Cov P;
-      if constexpr (Initiator::kSinglePoint) {
+      [[maybe_unused]] StartedFilter started_filter = started_from(prototype_.filter);
+      if constexpr (FilterStartingInitiator<Initiator, Filter>) {
+        const Status started = initiator_.start(started_filter, scan.z[j], channels_of(scan, j));
+        if (started != Status::kOk) {
+          if (started == Status::kOutOfRange) {
+            ++stats_.refused;
+          } else {
+            ++stats_.filter_failures;
+          }
+          note_failure(started);
+          continue;
+        }
+      } else if constexpr (Initiator::kSinglePoint) {
         const Status started = initiator_.initiate(scan.z[j], x, P);
         if (started == Status::kOutOfRange) {
           ++stats_.refused;
+          note_failure(started);
           continue;
         }
         if (started != Status::kOk) {
           ++stats_.filter_failures;
+          note_failure(started);
           continue;
         }
       }
@@ -554,7 +696,13 @@ class Tracker {
       tr.associated = true;
       tr.measurement_index = static_cast<std::int16_t>(j);
       manager_.start(tr);
-      if constexpr (Initiator::kSinglePoint) {
+      if constexpr (FilterStartingInitiator<Initiator, Filter>) {
+        tr.filter = started_filter;
+        tr.initialised = true;
+        if (tr.filter.diagnostics().fused) {  // what the start fused is the track's first association
+          tr.nis = tr.filter.diagnostics().nis;
+        }
+      } else if constexpr (Initiator::kSinglePoint) {
         if (tr.filter.reset(x, P) != Status::kOk) {
           table_.release(slot);
           ++stats_.filter_failures;
@@ -597,7 +745,8 @@ class Tracker {
   /// frame (stale or unhealthy), any track with a variance that is not
   /// positive and finite, and any track whose position variance exceeds
   /// the limit.
-  void manage(const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks], const bool (&drop)[kMaxTracks]) {
+  void manage(const Scan& scan, const bool (&existed)[kMaxTracks], const bool (&hit)[kMaxTracks],
+              const bool (&drop)[kMaxTracks]) {
     for (const std::size_t i : table_.active_slots()) {  // releases only slot i
       TrackT& tr = table_[i];
       if (existed[i]) {
@@ -623,6 +772,8 @@ class Tracker {
           ++stats_.confirmed;
         } else if (v == TrackVerdict::kDelete) {
           remove = true;
+        } else if (v == TrackVerdict::kRestart) {
+          restart(tr, i, scan);
         }
       }
       if (drop[i]) {
@@ -639,6 +790,38 @@ class Tracker {
         table_.release(i);
         ++stats_.deleted;
       }
+    }
+  }
+
+  /// TrackVerdict::kRestart: start the track again from the plot it took
+  /// this frame, on a copy of its own filter (a FilterStartingInitiator),
+  /// and keep that start only if it fused more channels of the plot than
+  /// the track's update did. A restarted track has a new id and starts
+  /// counting again from this frame (its first hit).
+  void restart(TrackT& tr, std::size_t slot, const Scan& scan) {
+    if constexpr (FilterStartingInitiator<Initiator, Filter>) {
+      if (tr.measurement_index < 0 || static_cast<std::size_t>(tr.measurement_index) >= scan.count) return;
+      const auto j = static_cast<std::size_t>(tr.measurement_index);
+      Filter fresh = tr.filter;
+      if (initiator_.start(fresh, scan.z[j], channels_of(scan, j)) != Status::kOk) return;
+      if (channel_count(fresh.diagnostics().fused_channels) <= channel_count(tr.filter.diagnostics().fused_channels)) {
+        return;
+      }
+      tr.filter = fresh;
+      table_.renew_id(slot);
+      tr.age = 0;
+      tr.hits = 1;
+      tr.misses = 0;
+      tr.history = 1;
+      tr.associated = true;
+      tr.nis = tr.filter.diagnostics().nis;
+      tr.test_ratio = Scalar(0);
+      manager_.start(tr);
+      ++stats_.restarted;
+    } else {
+      (void)tr;
+      (void)slot;
+      (void)scan;
     }
   }
 

@@ -1,41 +1,44 @@
 // The underwater tracker of paper 003 (SPEC sections 3, 4, 6 and 9, UW-003):
 // one target, a few beacons, each frame a set of TOA arrivals labelled by
-// beacon and path (direct or seabed-reflected). The generic Tracker
-// (tracking/tracker.hpp) associates unlabelled plots to many tracks; here
-// the labels already say which channel each arrival is, so the front end is
-// a small single-target step(frame) in the same style:
-//
-//   step(scan): validate -> not yet initialised: robust multilateration of
-//   the frame (tracking/multilateration.hpp), then an EKF update with its
-//   inliers from a wide prior (which gives P its position / sound-speed
-//   correlation) -> initialised: predict to the frame time, per-channel gate
-//   k*sqrt(S_ii) (and the optional ellipsoidal gate), update with the
-//   channels that pass (predict-only when none does), widen P for what the
-//   per-channel gate dropped -> keep the depth in the water -> report.
+// beacon and path (direct or seabed-reflected). It is the one Tracker
+// (tracking/tracker.hpp) composed for a labelled sensor:
+//   Filter     ChannelGatedEkf (filters/channel_gated_ekf.hpp): per-channel
+//              gate k*sqrt(S_ii) (and the optional ellipsoidal gate) in front
+//              of Ekf's update; P widened for what the gate dropped; the
+//              depth kept in the water;
+//   Initiator  MultilaterationInitiator: a robust fix of the frame, then an
+//              EKF update with its inliers from a wide prior;
+//   Associator LabelledAssociation: the frame is the target's, no gate;
+//   Manager    ReacquireWhenLost: confirmed at its fix, never deleted for
+//              missing data, restarted from a fresh fix when it keeps
+//              fusing at most half of full frames;
+//   capacities one track, one measurement (the frame as one ChannelScan
+//              entry: channel = 2 beacon + path).
+// What is left here is the sonar's front end: the labels become channels
+// (checks that need the beacon table), and the step's summary.
 //
 // State [x y z vx vy vz c] (models/motion/constant_velocity_3d_sound_speed.hpp),
-// measurement models/measurement/multipath_toa.hpp, filter
-// filters/channel_gated_ekf.hpp. Every non-kOk status leaves the tracker as
-// it was (the step works on a copy of the 7-state filter and commits at the
-// end); only the per-status counters move. No allocation, bounded loops.
+// measurement models/measurement/multipath_toa.hpp. No allocation, bounded
+// loops.
 #pragma once
 
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
+#include "kestrel/association/labelled.hpp"
 #include "kestrel/filters/channel_gated_ekf.hpp"
-#include "kestrel/math/finite.hpp"
 #include "kestrel/models/measurement/multipath_toa.hpp"
 #include "kestrel/models/motion/constant_velocity_3d_sound_speed.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
-#include "kestrel/tracking/elapsed.hpp"
-#include "kestrel/tracking/frame_clock.hpp"
 #include "kestrel/tracking/multilateration.hpp"
+#include "kestrel/tracking/multilateration_initiator.hpp"
+#include "kestrel/tracking/reacquire_when_lost.hpp"
 #include "kestrel/tracking/toa_scan.hpp"
 #include "kestrel/tracking/track.hpp"
+#include "kestrel/tracking/tracker.hpp"
 
 namespace kestrel {
 
@@ -44,7 +47,7 @@ template <class Scalar, int kMaxBeacons>
 struct UnderwaterTrackerConfig {
   ConstantVelocity3DSoundSpeed<Scalar> motion{};   ///< Process noise (accel sigma, c random walk).
   MultipathToaConfig<Scalar, kMaxBeacons> toa{};   ///< Beacons, seabed depth D, TOA sigma.
-  ChannelGateConfig<Scalar> gate{};                ///< Per-channel k (default 2) and ellipsoidal option.
+  ChannelGateConfig<Scalar> gate{};                ///< Per-channel k (default 2) and ellipsoidal option (its widen_for_dropped is gate_truncation_covariance).
   MultilaterationConfig<Scalar> init{};            ///< First fix; its sound speed is the initial c.
   Scalar initial_position_sigma_m = lit<Scalar>(100.0);    ///< Prior sigma around the fix before its EKF update, m.
   Scalar initial_velocity_sigma_mps = lit<Scalar>(2.0);    ///< Initial velocity sigma (velocity starts at 0), m/s.
@@ -52,19 +55,20 @@ struct UnderwaterTrackerConfig {
   Scalar max_toa_s = lit<Scalar>(10.0);            ///< Arrival times outside (0, max_toa_s] are out of range, s.
   /// Re-run the multilateration after this many frames in a row that carried
   /// at least init.min_arrivals arrivals but fused at most half of them
-  /// (0: never). A track that is on the target gates out an arrival with
+  /// (0: never; ReacquireWhenLost). A track that is on the target gates out an arrival with
   /// probability about 0.05 at k = 2 (more with outliers), so half a frame
   /// gated out, frame after frame, means the gate has locked onto a wrong
   /// estimate and is throwing the data away.
   std::uint16_t reacquire_after_lost_frames = 3;
-  /// Widen P for the channels the per-channel gate dropped (add_gate_truncation()).
+  /// Widen P for the channels the per-channel gate dropped
+  /// (ChannelGateConfig::widen_for_dropped).
   /// Without it the k = 2 gate, which drops the ~5 % of good arrivals with
   /// the largest innovations, leaves P too small (uw003-clean, 200 runs:
   /// position NEES 3.66 without, 2.99 with, for 3 degrees of freedom) and
   /// depth drifts (docs/underwater.md).
   bool gate_truncation_covariance = true;
   /// Keep the depth estimate within [init.depth_margin_m, D - that] by
-  /// projecting the state onto the bound (project_depth()).
+  /// projecting the state onto the bound (ChannelGatedEkf::constrain()).
   bool project_depth = true;
   /// A frame more than this after the last one restarts the track from a
   /// fresh fix instead of predicting across the gap, us. Default 60 s.
@@ -110,6 +114,8 @@ class UnderwaterTracker {
   using Motion = ConstantVelocity3DSoundSpeed<Scalar>;
   using Toa = MultipathToa<Motion, kMaxBeacons>;
   using Filter = ChannelGatedEkf<Motion, Toa>;
+  using Initiator = MultilaterationInitiator<Scalar>;
+  using Core = Tracker<Filter, Initiator, 1, 1, LabelledAssociation, ReacquireWhenLost>;
   using Layout = typename Motion::Layout;
   using State = typename Filter::State;
   using Cov = typename Filter::Cov;
@@ -117,190 +123,149 @@ class UnderwaterTracker {
   using Scan = ToaScan<Scalar, kMaxArrivals>;
   /// Every tracker's report (tracking/track.hpp): x = [x y z vx vy vz c]
   /// (m, m, m depth down, m/s x3, m/s); one confirmed track whose id
-  /// changes at every (re)initialisation (age 0 on that frame); fusion per
-  /// channel (channel = 2 beacon + path): innovation, variance, the
-  /// per-channel gate's test ratio, present / rejected (by a gate, or by
-  /// the fix on an initialisation) / fused; nis = fusion.nis and
-  /// test_ratio 0 (the labels associate, no gate on the whole frame).
+  /// changes at every (re)start (age 0 on that frame); fusion per channel
+  /// (channel = 2 beacon + path): innovation, variance, the per-channel
+  /// gate's test ratio, present / rejected (by a gate, or by the fix on a
+  /// start) / fused; nis = fusion.nis and test_ratio 0 (the labels
+  /// associate; no gate on the whole frame); measurement_index 0 (the
+  /// frame), with associated false when the gate dropped every channel.
   using Report = TrackReport<Filter>;
   using Config = UnderwaterTrackerConfig<Scalar, kMaxBeacons>;
   static_assert(Motion::kStateDim == 7, "report layout");
   static_assert(kMaxArrivals <= 255, "per-frame counts are uint8");
 
   explicit UnderwaterTracker(const Config& config)
-      : config_(config), clock_(config.max_forward_jump_us, config.resync_frames) {
-    Toa toa;
-    toa.config = config.toa;
-    filter_ = Filter(config.motion, toa);
-    // Constants of the per-channel gate's truncation, once, in double:
-    // tail = Pr(|u| > k) = erfc(k / sqrt 2) for u ~ N(0, 1) and
-    // excess = E[u^2 | |u| > k] - 1 = k phi(k) / Q(k), Q(k) = tail / 2
-    // (0.0455 and 4.75 at k = 2; 0.0027 and 9.85 at k = 3).
-    const double k = ScalarTraits<Scalar>::to_double(config.gate.k_sigma);
-    const double tail = std::erfc(k / std::sqrt(2.0));
-    const double phi = std::exp(-0.5 * k * k) / std::sqrt(2.0 * 3.14159265358979323846);
-    gate_tail_ = ScalarTraits<Scalar>::from_double(tail);
-    gate_excess_ = ScalarTraits<Scalar>::from_double(tail > 0.0 ? 2.0 * k * phi / tail : 0.0);
-  }
+      : config_(config), core_(prototype(config), Initiator(start_config(config)), core_config(config),
+                               ReacquireWhenLost<Scalar>(reacquire_params(config))) {}
 
   /// Process one frame.
-  /// @return kOk (tracked, predict-only, or initialised: see last_step());
-  ///   frame checks, in this order: kMalformedFrame (count over capacity,
-  ///   unknown path, two arrivals on one channel), kTimeWentBackwards,
+  /// @return kOk (tracked, predict-only, or (re)started: see last_step());
+  ///   frame checks, in this order, which leave the tracker as it was (only
+  ///   the count of consecutive off-clock frames moves): kMalformedFrame
+  ///   (count over capacity, unknown path, two arrivals on one channel),
+  ///   kNonFinite (an arrival time), kOutOfRange (beacon not configured,
+  ///   time outside (0, max_toa_s]), kTimeWentBackwards,
   ///   kTimeJumpedForward (later than the last frame by more than
-  ///   max_forward_jump_us), kNonFinite (an arrival time), kOutOfRange
-  ///   (beacon not configured, time outside (0, max_toa_s]);
-  ///   before initialisation, the fix's status: kUnderdetermined,
-  ///   kNotPositiveDefinite, kNoConvergence, kAmbiguous;
-  ///   filter failures: kNonFinite, kNotPositiveDefinite.
-  ///   On any non-kOk status the tracker is unchanged and reports() is empty;
-  ///   only the count of consecutive off-clock frames moves: resync_frames
-  ///   of them in a row, each at or after the previous and within
-  ///   max_forward_jump_us of it, restart the track from a fix on their
-  ///   clock (last_step().resynced, counters().resyncs).
+  ///   max_forward_jump_us); resync_frames such time faults in a row, each
+  ///   at or after the previous and within max_forward_jump_us of it,
+  ///   restart the track on their clock (last_step().resynced);
+  ///   a frame that passed them but left no track: the fix's status
+  ///   (kUnderdetermined, kNotPositiveDefinite, kNoConvergence,
+  ///   kAmbiguous) when none could start, or the filter's (kNonFinite,
+  ///   kNotPositiveDefinite) when the track's update failed and the
+  ///   tracker's health rule deleted it; the frame's time was taken.
+  ///   reports() is empty after any non-kOk status.
   [[nodiscard]] Status step(const Scan& scan) {
     stats_ = UnderwaterStepStats{};
-    report_count_ = 0;
-    MeasVec z = MeasVec::Zero();
-    ChannelMask present = 0;
-    Status valid = validate(scan, z, present, true);
-    // A frame refused only for its time counts toward the resync rule;
-    // taking the new clock commits only if the frame then gives a fix.
-    bool resync = false;
-    if (valid == Status::kTimeWentBackwards || valid == Status::kTimeJumpedForward) {
-      z.setZero();
-      present = 0;
-      if (validate(scan, z, present, false) == Status::kOk && clock_.off_clock(scan.t_us)) {
-        resync = true;
-        valid = Status::kOk;
-      }
-    }
-    if (valid != Status::kOk) return refuse(valid);
-    stats_.arrivals = static_cast<std::uint8_t>(scan.count);
-    stats_.present = present;
+    reported_ = false;
+    ChannelFrame frame;
+    if (const Status s = to_channels(scan, frame); s != Status::kOk) return refuse(s);
+    if (const Status s = core_.step(frame); s != Status::kOk) return refuse(s);
+    const StepStats& cs = core_.last_step();
+    const std::span<const Report> r = core_.reports();
+    if (r.empty()) return refuse(cs.failure != Status::kOk ? cs.failure : Status::kNotInitialised);
 
-    Filter next = filter_;
-    std::uint16_t lost_frames = lost_frames_;
-    const std::int64_t gap_us = initialised_ && !resync ? elapsed_us(scan.t_us, clock_.last_us()) : 0;
-    if (!initialised_ || resync || gap_us > config_.max_predict_us) {
-      const Status s = initialise(next, z, present);
-      if (s != Status::kOk) return refuse(s);
-      lost_frames = 0;
-    } else {
-      const Scalar dt = ScalarTraits<Scalar>::from_ratio(gap_us, 1000000);
-      Status s = next.predict(dt);
-      const State x_pred = next.x();
-      if (s == Status::kOk) s = next.update_gated(z, present, config_.gate);
-      if (s == Status::kOk && config_.gate_truncation_covariance && dropped_by_channel_gate(next) != 0) {
-        s = add_gate_truncation(next, x_pred, channel_count(present));
-      }
-      if (s != Status::kOk) return refuse(s);
-      const auto& d = next.diagnostics();
-      stats_.fused_mask = d.fused_channels;
-      stats_.gated_mask = d.rejected;
-      stats_.fused = static_cast<std::uint8_t>(channel_count(d.fused_channels));
-      stats_.gated_out = static_cast<std::uint8_t>(channel_count(stats_.gated_mask));
-      stats_.predict_only = d.fused_channels == 0;
-      lost_frames = 0;
-      const int arrivals = channel_count(present);
-      if (arrivals >= static_cast<int>(config_.init.min_arrivals) && 2 * static_cast<int>(stats_.fused) <= arrivals) {
-        lost_frames = static_cast<std::uint16_t>(lost_frames_ < UINT16_MAX ? lost_frames_ + 1 : lost_frames_);
-        // Lost: most of what full frames said was outside the gate, several
-        // frames running. Start again from this frame if its fix explains
-        // more arrivals than the track fused.
-        if (config_.reacquire_after_lost_frames > 0 && lost_frames >= config_.reacquire_after_lost_frames) {
-          Filter fresh = next;
-          const UnderwaterStepStats tracked = stats_;
-          if (initialise(fresh, z, present) == Status::kOk && stats_.fused > tracked.fused) {
-            next = fresh;
-            lost_frames = 0;
-          } else {
-            stats_ = tracked;
-          }
-        }
-      }
-    }
-
-    if (config_.project_depth) {
-      const Status s = project_depth(next);
-      if (s != Status::kOk) return refuse(s);
-    }
-    if (stats_.initialised) {
-      track_id_ = track_id_ < UINT32_MAX ? track_id_ + 1 : 1;
-      age_ = 0;
-      hits_ = 0;
-      misses_ = 0;
-    } else {
-      age_ = static_cast<std::uint16_t>(age_ < UINT16_MAX ? age_ + 1 : age_);
-    }
-    if (stats_.fused > 0) {
-      hits_ = static_cast<std::uint16_t>(hits_ < UINT16_MAX ? hits_ + 1 : hits_);
-      misses_ = 0;
-    } else {
-      misses_ = static_cast<std::uint16_t>(misses_ < UINT16_MAX ? misses_ + 1 : misses_);
-    }
-    filter_ = next;
-    initialised_ = true;
-    lost_frames_ = lost_frames;
-    clock_.accept(scan.t_us, resync);
+    const FusionDiagnostics<Scalar, Filter::kMeasDim>& d = r[0].fusion;
     stats_.status = Status::kOk;
-    stats_.resynced = resync;
-    counters_.resyncs = clock_.resyncs();
+    stats_.arrivals = static_cast<std::uint8_t>(scan.count);
+    stats_.present = frame.present[0];
+    stats_.initialised = cs.seeded > 0 || cs.restarted > 0;
+    stats_.resynced = cs.resynced;
+    stats_.fused_mask = d.fused_channels;
+    stats_.gated_mask = d.rejected;
+    stats_.fused = static_cast<std::uint8_t>(channel_count(d.fused_channels));
+    stats_.gated_out = static_cast<std::uint8_t>(channel_count(d.rejected));
+    stats_.predict_only = !stats_.initialised && d.fused_channels == 0;
     ++counters_.frames_ok;
     counters_.arrivals += stats_.arrivals;
     counters_.fused += stats_.fused;
     counters_.gated_out += stats_.gated_out;
     if (stats_.predict_only) ++counters_.predict_only;
     if (stats_.initialised) ++counters_.initialisations;
-
-    Report& r = reports_[0];
-    r.t_us = scan.t_us;
-    r.track_id = track_id_;
-    r.status = TrackStatus::kConfirmed;
-    r.age = age_;
-    r.hits = hits_;
-    r.misses = misses_;
-    r.associated = stats_.fused > 0;
-    r.measurement_index = r.associated ? std::int16_t{0} : std::int16_t{-1};
-    r.fusion = filter_.diagnostics();
-    if (stats_.initialised) {  // the fix chose the channels; the update had only its inliers
-      r.fusion.present = stats_.present;
-      r.fusion.rejected = stats_.gated_mask;
-    }
-    r.nis = r.fusion.nis;  // no association gate: the update's NIS
-    r.test_ratio = Scalar(0);
-    r.score = Scalar(0);
-    r.x = filter_.x();
-    r.P = filter_.P();
-    report_count_ = 1;
+    counters_.resyncs = core_.resyncs();
+    reported_ = true;
     return Status::kOk;
   }
 
   /// The report of the last kOk step (one), or nothing.
-  std::span<const Report> reports() const { return {reports_, report_count_}; }
+  std::span<const Report> reports() const { return reported_ ? core_.reports() : std::span<const Report>{}; }
   const UnderwaterStepStats& last_step() const { return stats_; }
   const UnderwaterCounters& counters() const { return counters_; }
-  /// The filter (state, covariance, per-channel diagnostics of the last update).
-  const Filter& filter() const { return filter_; }
+  /// The track's filter (state, covariance, per-channel diagnostics of the
+  /// last update); the prototype before the first fix.
+  const Filter& filter() const {
+    for (const std::size_t i : core_.tracks().active_slots()) return core_.tracks()[i].filter;
+    return prototype_;
+  }
   /// The multilateration result of the last fix attempt.
-  const MultilaterationResult<Scalar>& last_fix() const { return fix_; }
-  bool initialised() const { return initialised_; }
+  const MultilaterationResult<Scalar>& last_fix() const { return core_.initiator().last_fix(); }
+  /// A track is held (a fix started it and no rule has deleted it).
+  bool initialised() const { return core_.tracks().size() > 0; }
   const Config& config() const { return config_; }
+  /// The composed tracker (its statistics and track table).
+  const Core& core() const { return core_; }
 
  private:
+  using ChannelFrame = typename Core::Scan;
+
+  static Filter prototype(const Config& c) {
+    Toa toa;
+    toa.config = c.toa;
+    ChannelGateConfig<Scalar> gate = c.gate;
+    gate.widen_for_dropped = c.gate_truncation_covariance;
+    StateBound<Scalar> bound;
+    if (c.project_depth) {
+      bound.index = Layout::kZ;
+      bound.lo = c.init.depth_margin_m;
+      bound.hi = c.toa.seabed_depth_m - c.init.depth_margin_m;
+    }
+    return Filter(c.motion, toa, gate, bound);
+  }
+
+  static MultilaterationStart<Scalar> start_config(const Config& c) {
+    MultilaterationStart<Scalar> m;
+    m.fix = c.init;
+    m.position_sigma_m = c.initial_position_sigma_m;
+    m.velocity_sigma_mps = c.initial_velocity_sigma_mps;
+    m.sound_speed_sigma_mps = c.initial_sound_speed_sigma_mps;
+    return m;
+  }
+
+  static TrackerConfig<Scalar, Filter::kMeasDim> core_config(const Config& c) {
+    TrackerConfig<Scalar, Filter::kMeasDim> t;
+    t.z_min = MeasVec::Zero();  // (0, max_toa_s] is checked with the labels
+    t.z_max = MeasVec::Constant(c.max_toa_s);
+    t.max_position_variance_m2 = std::numeric_limits<Scalar>::max();  // a sonar track is never dropped for its spread
+    t.max_predict_us = c.max_predict_us;
+    t.max_forward_jump_us = c.max_forward_jump_us;
+    t.resync_frames = c.resync_frames;
+    return t;
+  }
+
+  static ReacquireWhenLostParams reacquire_params(const Config& c) {
+    ReacquireWhenLostParams p;
+    p.min_arrivals = c.init.min_arrivals;
+    p.lost_frames = c.reacquire_after_lost_frames;
+    return p;
+  }
+
   Status refuse(Status s) {
     stats_ = UnderwaterStepStats{};
     stats_.status = s;
-    report_count_ = 0;
+    reported_ = false;
+    counters_.resyncs = core_.resyncs();
     ++counters_.rejected[static_cast<std::size_t>(s)];
     return s;
   }
 
-  /// Frame checks; fills the channel vector and mask on success. The time
-  /// against the last accepted frame is checked only when check_time.
-  Status validate(const Scan& scan, MeasVec& z, ChannelMask& present, bool check_time) const {
+  /// The labels become channels: one ChannelScan entry holding the frame.
+  /// kMalformedFrame: count over capacity, a path that is not one, two
+  /// arrivals on one channel; kNonFinite: a time; kOutOfRange: a beacon
+  /// not configured, a time outside (0, max_toa_s].
+  Status to_channels(const Scan& scan, ChannelFrame& out) const {
     using T = ScalarTraits<Scalar>;
     if (scan.count > kMaxArrivals) return Status::kMalformedFrame;
+    ChannelMask present = 0;
     for (std::size_t i = 0; i < kMaxArrivals; ++i) {
       if (i >= scan.count) break;
       const auto& a = scan.arrivals[i];
@@ -310,13 +275,11 @@ class UnderwaterTracker {
       if (has_channel(present, ch)) return Status::kMalformedFrame;
       present = with_channel(present, ch);
     }
-    if (check_time) {
-      if (const Status s = clock_.check(scan.t_us); s != Status::kOk) return s;
-    }
     for (std::size_t i = 0; i < kMaxArrivals; ++i) {
       if (i >= scan.count) break;
       if (!T::is_finite(scan.arrivals[i].toa_s)) return Status::kNonFinite;
     }
+    MeasVec z = MeasVec::Zero();
     for (std::size_t i = 0; i < kMaxArrivals; ++i) {
       if (i >= scan.count) break;
       const auto& a = scan.arrivals[i];
@@ -324,125 +287,19 @@ class UnderwaterTracker {
       if (!(a.toa_s > Scalar(0)) || a.toa_s > config_.max_toa_s) return Status::kOutOfRange;
       z(Toa::channel(a.beacon, a.path)) = a.toa_s;
     }
-    return Status::kOk;
-  }
-
-  /// The channels the per-channel gate dropped in the last update (its
-  /// test ratio over 1), not those the ellipsoidal gate peeled.
-  static ChannelMask dropped_by_channel_gate(const Filter& f) {
-    const auto& d = f.diagnostics();
-    ChannelMask m = 0;
-    for (int i = 0; i < Filter::kMeasDim; ++i) {
-      if (has_channel(d.rejected, i) && d.test_ratio(i) > Scalar(1)) m = with_channel(m, i);
-    }
-    return m;
-  }
-
-  /// The per-channel gate drops channel i when |nu_i| > k sqrt(S_ii) and the
-  /// update then treats it as never received. But had the arrival been a
-  /// good one, the truth lies where channel i's innovation is beyond k sigma:
-  /// with u = nu_i / sqrt(S_ii) ~ N(0, 1), E[u^2 | |u| > k] = 1 + excess
-  /// (5.75 at k = 2), so along g = P h_i^T the spread is larger than P says
-  /// by excess g g^T / s_i, s_i = h_i P h_i^T + R_ii. That term is added,
-  /// with P the covariance after the update with the kept channels (an
-  /// approximation: the gate tested the predicted innovation) and h_i at the
-  /// predicted state, weighted by the probability that a gated arrival is
-  /// good, Pr(good, gated) / Pr(gated) <= tail / (gated fraction so far)
-  /// (1 when nothing but noise is gated, about 0.45 with UW-003's 5 %
-  /// outliers), capped at 1. The mean is left alone (a two-sided gate says
-  /// nothing about the sign). The kept channels need no correction: the
-  /// update conditions on their values. Only channels dropped by the
-  /// per-channel gate count; the ellipsoidal gate's are left as they are.
-  Status add_gate_truncation(Filter& f, const State& x_pred, int arrivals_now) const {
-    const ChannelMask gated = dropped_by_channel_gate(f);
-    const auto H = f.measurement().jacobian(x_pred);
-    const auto R = f.measurement().noise();
-    // Running totals including this frame (counters_ moves at the commit).
-    const std::int64_t arrivals = static_cast<std::int64_t>(counters_.arrivals) + arrivals_now;
-    const std::int64_t dropped = static_cast<std::int64_t>(counters_.gated_out) + channel_count(gated);
-    Scalar good = gate_tail_ * ScalarTraits<Scalar>::from_ratio(arrivals, dropped);
-    if (good > Scalar(1)) good = Scalar(1);
-    const Scalar w = good * gate_excess_;
-    const Cov& P = f.P();
-    Cov widened = P;
-    for (int i = 0; i < Filter::kMeasDim; ++i) {
-      if (!has_channel(gated, i)) continue;
-      const State g = P * H.row(i).transpose();
-      const Scalar s_i = H.row(i).dot(g) + R(i, i);
-      widened += (w / s_i) * (g * g.transpose());
-    }
-    return f.reset(f.x(), widened);
-  }
-
-  /// The water lies between the surface and the seabed; a linearised update
-  /// can still put the estimate outside, typically above the surface at the
-  /// mirror image of the target that the direct arrivals cannot tell apart
-  /// (2 of 200 uw003 first updates land at -32 and -7 m; direct-only runs
-  /// stay there). Project the state onto the violated bound along P
-  /// (x -= P e (e^T x - bound) / P_zz, e the depth axis: the estimate
-  /// projection of a linear inequality constraint, which also moves x, y, c
-  /// by their correlation with depth); P is kept, which is conservative.
-  Status project_depth(Filter& f) const {
-    const Scalar lo = config_.init.depth_margin_m;
-    const Scalar hi = config_.toa.seabed_depth_m - config_.init.depth_margin_m;
-    const Scalar z = f.x()(Layout::kZ);
-    if (!(z < lo) && !(z > hi)) return Status::kOk;
-    const Scalar bound = z < lo ? lo : hi;
-    const Cov& P = f.P();
-    const Scalar pzz = P(Layout::kZ, Layout::kZ);
-    if (!(pzz > Scalar(0))) return Status::kNotPositiveDefinite;
-    State x = f.x() - P.col(Layout::kZ) * ((z - bound) / pzz);
-    x(Layout::kZ) = bound;  // exact, whatever the rounding
-    return f.reset(x, P);
-  }
-
-  /// Fix by multilateration, then one EKF update with the fix's inliers from
-  /// a wide prior centred on it. Works on `f`; records the fix in fix_.
-  Status initialise(Filter& f, const MeasVec& z, ChannelMask present) {
-    fix_ = multilaterate(f.measurement(), z, present, config_.init);
-    if (fix_.status != Status::kOk) return fix_.status;
-    State x0 = State::Zero();
-    x0(Layout::kX) = fix_.position_m(0);
-    x0(Layout::kY) = fix_.position_m(1);
-    x0(Layout::kZ) = fix_.position_m(2);
-    x0(Layout::kC) = config_.init.sound_speed_mps;
-    Cov P0 = Cov::Zero();
-    const Scalar sp = config_.initial_position_sigma_m;
-    const Scalar sv = config_.initial_velocity_sigma_mps;
-    const Scalar sc = config_.initial_sound_speed_sigma_mps;
-    for (int a = 0; a < 3; ++a) {
-      P0(Layout::kPos + a, Layout::kPos + a) = sp * sp;
-      P0(Layout::kVel + a, Layout::kVel + a) = sv * sv;
-    }
-    P0(Layout::kC, Layout::kC) = sc * sc;
-    Status s = f.reset(x0, P0);
-    if (s == Status::kOk) s = f.update(z, fix_.inliers);
-    if (s != Status::kOk) return s;
-    stats_.initialised = true;
-    stats_.fused_mask = fix_.inliers;
-    stats_.gated_mask = fix_.rejected;
-    stats_.fused = static_cast<std::uint8_t>(channel_count(fix_.inliers));
-    stats_.gated_out = static_cast<std::uint8_t>(channel_count(fix_.rejected));
-    stats_.predict_only = false;
+    out.t_us = scan.t_us;
+    out.count = 1;
+    out.z[0] = z;
+    out.present[0] = present;
     return Status::kOk;
   }
 
   Config config_;
-  Filter filter_{};
-  MultilaterationResult<Scalar> fix_{};
-  Scalar gate_tail_{};    ///< Pr(|u| > k), u ~ N(0, 1), k = config.gate.k_sigma.
-  Scalar gate_excess_{};  ///< E[u^2 | |u| > k] - 1.
+  Filter prototype_ = prototype(config_);
+  Core core_;
   UnderwaterStepStats stats_{};
   UnderwaterCounters counters_{};
-  Report reports_[1]{};
-  std::size_t report_count_ = 0;
-  FrameClock clock_{};  ///< Last accepted frame's time and the time-fault rules.
-  std::uint16_t lost_frames_ = 0;  ///< Consecutive lost frames (reacquire_after_lost_frames).
-  std::uint32_t track_id_ = 0;     ///< Id of the current track (a new one per initialisation, from 1).
-  std::uint16_t age_ = 0;          ///< Frames since the track's initialisation.
-  std::uint16_t hits_ = 0;         ///< Frames that fused an arrival since then.
-  std::uint16_t misses_ = 0;       ///< Consecutive predict-only frames.
-  bool initialised_ = false;
+  bool reported_ = false;
 };
 
 /// Parameters of the underwater tracker in SI units (double), with the
