@@ -17,6 +17,7 @@ PACKAGES=(
   libbenchmark-dev libcli11-dev nlohmann-json3-dev
   python3 python3-matplotlib
   valgrind
+  tshark
   clang libclang-rt-14-dev
 )
 
