@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # kestrel_catch_tests(<target> [TEST_PREFIX <prefix>])
 #
 # Registers every Catch2 test case of <target> as its own CTest test, like
