@@ -23,8 +23,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/core/include/ ${PROJECT_SOURCE_DIR}/hal/
         FILES_MATCHING PATTERN "*.hpp")
 install(TARGETS kestrel_core kestrel_hal
         EXPORT kestrelTargets
-        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT kestrel_development
-        INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT kestrel_development)
 install(EXPORT kestrelTargets
         NAMESPACE kestrel::
         DESTINATION ${KESTREL_INSTALL_CMAKEDIR}
