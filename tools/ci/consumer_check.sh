@@ -85,6 +85,10 @@ case $mode in
     done
     # Nothing but headers under include/ (no sources, docs or board code).
     if find "$prefix/include" -type f ! -name '*.hpp' | grep -q .; then fail "non-header files under include/"; fi
+    # Every quoted include of an installed header resolves inside the prefix.
+    unresolved=$(cd "$prefix/include" && grep -rhoE '#include "[^"]+"' . | sed 's/#include "//; s/"$//' | sort -u |
+                 while read -r h; do [[ -f $h ]] || echo "$h"; done)
+    [[ -z $unresolved ]] || fail "installed headers include files that are not installed: $unresolved"
     if grep -rq -- '-Werror\|kestrel_firmware_flags' "$prefix/lib/cmake/kestrel"; then
       fail "the exported targets carry the firmware flags"
     fi
