@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Kestrel's two entry points on a fresh Debian machine (README quick start):
 #   bash run.sh sim    install what is missing, build host-release, run
 #                      kestrel-sim on the default suite -> results/

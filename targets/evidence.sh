@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # One command for the firmware evidence of every board (issue 7):
 #
 #   targets/evidence.sh [--host-instructions] [board ...]

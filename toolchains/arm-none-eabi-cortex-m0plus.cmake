@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cortex-M0+ (ARMv6-M, no FPU), bare metal, soft-float ABI. CPU/ABI only:
 # the board's flags, linker script and heap guard live in
 # targets/cortex-m0plus/. The driver picks the thumb/v6-m/nofp multilib of

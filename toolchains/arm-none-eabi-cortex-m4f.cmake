@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cortex-M4F (ARMv7E-M with the single-precision FPv4-SP FPU), bare metal,
 # hard-float ABI. CPU/ABI only: the board's flags, linker script and heap
 # guard live in targets/cortex-m4f/CMakeLists.txt.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Cortex-M7 (ARMv7E-M with the double-precision FPv5-D16 FPU), bare metal,
 # hard-float ABI. CPU/ABI only: the board's flags, linker script and heap
 # guard live in targets/cortex-m7/ (image.cmake). The driver picks the

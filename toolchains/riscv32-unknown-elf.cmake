@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # RISC-V 32 bare metal (default RV32IMAFC, ILP32F ABI: a single-precision
 # FPU, so the float build, as on the Cortex-M4F), for a GNU toolchain that
 # ships a C++ library: riscv-gnu-toolchain built with newlib

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # RISC-V 64 (RV64GC, LP64D ABI) embedded Linux: Debian's cross compiler
 # (package g++-riscv64-linux-gnu). CPU/ABI only: the board's flags, static
 # link and heap guard live in targets/riscv64-linux/. The target libraries

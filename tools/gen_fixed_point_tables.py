@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Generates core/include/kestrel/scalar/fixed_point_tables.hpp: the integer
 constants of the fixed-point math (CORDIC arctangent table, pi, the CORDIC
 gain), computed with mpmath at 100 significant digits and rounded to nearest.

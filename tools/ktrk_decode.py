@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Decode KTRK track records (the binary track output of every board,
 targets/common/include/kestrel/board/ktrk_record.hpp) into CSV on stdout.
 

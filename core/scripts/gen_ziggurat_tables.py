@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Generate core/include/kestrel/math/ziggurat_tables.hpp (run from the repo root):
 
     python3 core/scripts/gen_ziggurat_tables.py > core/include/kestrel/math/ziggurat_tables.hpp

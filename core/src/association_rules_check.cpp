@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the association and track-management policies (GNN solver,
 // GlobalNearestNeighbour, ProbabilisticDataAssociation, SequentialLlr) for the floating scalars under the
 // firmware rules (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the core's templates for every supported floating scalar under the
 // firmware rules (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning wall
 // with -Werror). Nothing links against it: if core ever needs exceptions,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the fixed-point scalar and the EKF-CA radar tracker on it under the
 // firmware rules (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning wall
 // with -Werror), for both formats. Nothing links against it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the passive-radar (PCL) tracker of kestrel/tracking/pcl_tracker.hpp
 // for every supported floating scalar under the firmware rules
 // (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning wall with -Werror),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the R2-AEKF (kestrel/filters/r2aekf.hpp) for double and float
 // under the firmware rules (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the
 // warning wall with -Werror), in both Q forms, and inside the radar Tracker,

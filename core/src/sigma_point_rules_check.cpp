@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the sigma-point and particle filters (UKF, CDKF, SR-UKF, SR-CDKF,
 // CRPF) and their helpers for double and float under the firmware rules
 // (-fno-exceptions -fno-rtti, EIGEN_NO_MALLOC, the warning wall with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compiles the underwater tracker of kestrel/tracking/underwater_tracker.hpp
 // (CV-3D + sound speed, multipath TOA, channel-gated EKF, multilateration)
 // for both floating scalars under the firmware rules (-fno-exceptions

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Table-driven CRC-32 (reflected 0xEDB88320). The table is computed by a
 // constexpr function at compile time, so there is no generated source to
 // keep in step and no start-up cost; it lands in .rodata (flash on a board).

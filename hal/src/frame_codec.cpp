@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame encode/decode for wire format version 1 (frame_format.hpp,
 // docs/wire_format.md). Every field is read and written one at a time
 // through the little-endian helpers; every loop is bounded by the input span

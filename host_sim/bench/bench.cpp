@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-bench: ns per step (Google Benchmark) of every case in
 // bench_cases.hpp, dense and structured side by side in the same run:
 //   filter/<filter>/<scalar>/<form>/step      predict + update over S1

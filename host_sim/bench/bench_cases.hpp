@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What kestrel-bench times and kestrel-instr-count counts, defined once:
 //   - the filter cases: every filter x scalar x form (dense / structured)
 //     on the CA-2D + polar radar models, built with the S1 sensor and the

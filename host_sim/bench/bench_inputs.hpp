@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Inputs shared by the timing benchmarks (bench.cpp, kestrel-bench) and the
 // instruction-count harness (instr_count.cpp, kestrel-instr-count): the S1
 // frames (SPEC section 9, fixed noise seed) and a full-capacity frame

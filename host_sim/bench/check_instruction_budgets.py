@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Instruction-count budgets of the core's step paths (issue 9).
 
 Runs kestrel-instr-count under valgrind --tool=callgrind, which dumps the

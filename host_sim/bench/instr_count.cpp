@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-instr-count: runs every measured path a fixed number of times with
 // callgrind collection switched on only around the measured calls, and
 // dumps callgrind's counters after each path (CALLGRIND_DUMP_STATS_AT with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The measuring side of kestrel-instr-count (instr_count.cpp): callgrind
 // collection around the measured calls, one dump per path, and the filter
 // and tracker paths of a filter type. Each family of cases is instantiated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-instr-count: the EKF (EKF-CA, R2-AEKF) family's cases, in a translation unit of
 // their own (instr_count.hpp says why).
 #include <vector>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-instr-count: the sigma-point (UKF, CDKF, SR-UKF, SR-CDKF) family's cases, in a translation unit of
 // their own (instr_count.hpp says why).
 #include <vector>

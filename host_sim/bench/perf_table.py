@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """The table of docs/performance.md: instructions per step (callgrind, via
 check_instruction_budgets.py's runner) and CPU ns per step (kestrel-bench),
 dense and structured side by side, as Markdown.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MC-001 (SPEC section 9; paper 001 section 4): the 3 x 3 grid of bearing
 // and range noise, 100 steps of a CV-2D target seen by a polar radar at the
 // origin, every filter of paper 001 (EKF, UKF, CDKF, SR-UKF, SR-CDKF, CRPF

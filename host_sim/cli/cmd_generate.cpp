@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim generate`: one seeded run of a scenario as files a user can
 // replay or inspect: the wire stream, its truth and its plots as CSV.
 #include <cstdio>

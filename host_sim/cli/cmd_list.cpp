@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim list`: the registered scenarios and filters.
 #include <cstdio>
 #include <string>

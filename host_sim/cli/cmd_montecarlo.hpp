@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim montecarlo --campaign mc001` and `kestrel-sim merge DIR...`:
 // the MC-001 grid of paper 001 over every filter (campaigns/mc001.hpp),
 // on every core, optionally as one shard of a cluster job array whose

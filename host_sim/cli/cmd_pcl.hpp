@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim pcl`: Monte Carlo runs of the passive-radar scenarios
 // (pcl002, pcl002-hard; SPEC section 9) with the ready-made PCL tracker,
 // scored with the PCL metrics (association accuracy, coverage after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim r2aekf-study`: the paper 000 reproduction of issue 3 in one
 // command (report/r2aekf_study.hpp): tuned EKF-CA baseline, the five-row
 // table over S1, S2, S1n, S2n, the sensitivity table, the side-by-side cost

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim replay`: run a filter over recorded data, a wire stream file
 // or a radar plot CSV (SPEC section 11), through the same board loop as the
 // simulation. With a truth CSV the run is scored like a scenario run.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim run` (one scenario, one filter, N seeds) and `kestrel-sim
 // suite` (the default suite the README runs: S1 and S2 with EKF-CA).
 #include <cstdio>

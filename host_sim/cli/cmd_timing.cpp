@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim timing`: per-step latency of the real-time loop on the host
 // (SPEC section 8). Runs one job at a time so runs do not compete for the
 // cores; every step of every run enters the distribution.

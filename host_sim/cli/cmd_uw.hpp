@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim uw`: Monte Carlo runs of the underwater scenarios (uw003 and
 // its variants; SPEC section 9) with the underwater tracker, scored with the
 // UW metrics (3D / horizontal / depth RMSE, sound-speed error std, gated-out

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The kestrel-sim subcommands. main.cpp parses the command line (CLI11)
 // into these option structs and calls the matching function; each returns
 // the process exit status. Errors in input files throw (std::runtime_error,

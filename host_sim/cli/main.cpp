@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-sim: scenario generation, Monte Carlo runs, replay of recorded
 // data and timing of the real-time loop, all through the HAL exactly as a
 // board runs the tracker (docs/host_sim.md). This file only parses the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Run one scenario with one filter over N seeds and write its files
 // (report/run_files.hpp) into a directory: the shared body of `run` and
 // `suite`.

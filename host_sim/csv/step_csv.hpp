@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-step CSV of one run (written by `run` for run 0 and by `replay`): one
 // row per scored frame with truth, the plot the scored track used, the
 // estimate and its error statistics:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paper 000's EKF-CA on the host board (kestrel/tracking/radar_tracker.hpp):
 // double ("ekf-ca") and float ("ekf-ca-f32", the Cortex-M4F build's scalar).
 // Defaults are SPEC section 9: sr 3 m, sb 0.30 deg, qj 1.6 m^2/s^5; confirmed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The filter registry: every tracker configuration kestrel-sim can run, by
 // name. Each entry builds its tracker (a concrete core Tracker type on the
 // host board) and runs it over a stream with pipeline/stream_run.hpp; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "filters/r2aekf_filters.hpp"
 
 #include <cstdio>

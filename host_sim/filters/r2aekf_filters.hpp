@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Paper 000's R2-AEKF (kestrel/filters/r2aekf.hpp) on the host board, for
 // kestrel-sim: "r2aekf" (default mode, SPEC 5 corrections), "r2aekf-paper"
 // (the printed equations) and "r2aekf-f32" (default mode in float, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "metrics/monte_carlo_stats.hpp"
 
 #include <cmath>

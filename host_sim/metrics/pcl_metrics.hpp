@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PCL-002 metrics (SPEC sections 9 and 10), per run and over Monte Carlo runs.
 //
 // Tolerance: a track estimate is "on the target" in a frame when

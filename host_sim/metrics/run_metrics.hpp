@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-run figures of SPEC section 10, computed from a sequence of per-step
 // errors. Kept free of tracker types so tests can feed hand-made sequences.
 //

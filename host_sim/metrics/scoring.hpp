@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scoring a run against truth, frame by frame (SPEC section 10).
 //
 // Which estimate is scored: at each frame, the confirmed track nearest to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UW-003 metrics (SPEC sections 9 and 10), per run and over Monte Carlo runs.
 //
 // Scored frames: every frame after the one that initialised the track (the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monte Carlo over seeds (SPEC section 10): run i uses seed base_seed + i.
 // Runs are independent and each writes only its own slot, so the results
 // are identical whatever the number of worker threads; only the step times

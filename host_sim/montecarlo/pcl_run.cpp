@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "montecarlo/pcl_run.hpp"
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One PCL run through the board loop (SPEC section 8): the scenario's wire
 // frames are encoded into a byte stream and driven exactly as a board drives
 // them, host::StreamFileFeed -> hal::PclAdapter (Doppler to range rate, the

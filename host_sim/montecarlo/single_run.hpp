@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One evaluated run: a stream through a registered filter, scored against
 // truth. Shared by `run` (one per seed), `replay` (one recorded stream)
 // and `timing`.

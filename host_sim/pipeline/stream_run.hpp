@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One run of a tracker over a byte stream, driven exactly as a board drives
 // it: host::StreamFileFeed -> hal::RadarAdapter -> Tracker::step ->
 // host::MemorySink, inside hal::Runner and timed by host::SteadyClock

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What one run of a tracker over a stream produced, independent of the
 // filter type: per frame the Runner's status, the step time and the
 // published reports flattened to host::TrackRow.

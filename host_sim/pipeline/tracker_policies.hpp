@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracker's associator and track manager as the command line names
 // them. The core composes them at compile time (tracking/tracker.hpp); a
 // run picks one of the instantiated compositions here, once per run, never

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Plots of the MC-001 campaign (called by kestrel-sim montecarlo/merge; runnable by hand).
 
   mc001_plots.py --dir DIR

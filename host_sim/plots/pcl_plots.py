@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Range-Doppler plot of one PCL run, like paper 002's figure 2 (called by
 `kestrel-sim pcl`; runnable by hand).
 

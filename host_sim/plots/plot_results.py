@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Plots for kestrel-sim results (called by kestrel-sim; runnable by hand).
 
   plot_results.py run --steps S.csv --tracks T.csv --out-prefix P [--title X]

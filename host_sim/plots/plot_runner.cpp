@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "plots/plot_runner.hpp"
 
 #include <cstdio>

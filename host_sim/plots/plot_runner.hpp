@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Runs the plot script (plots/plot_results.py) with /usr/bin/python3, the
 // interpreter that has matplotlib on this project's hosts; KESTREL_PYTHON
 // and KESTREL_PLOT_SCRIPT override the interpreter and the script. Plotting

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Figures like paper 000's figs. 2-5 from `kestrel-sim r2aekf-study` output.
 
   r2aekf_plots.py --dir results/r2aekf

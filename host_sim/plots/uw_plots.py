@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Figures of one UW run and of its Monte Carlo, like paper 003's figures 1-3
 (called by `kestrel-sim uw`; runnable by hand).
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The files `kestrel-sim pcl` writes into its output directory:
 //   pcl_runs.csv        one row per Monte Carlo run (the per-run figures);
 //   pcl_truth.csv       run 0: the drone (x, y, z, velocity) and its Rb, dRb, fD;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The results table printed by `run`, `replay`, `suite` and `timing`.
 #pragma once
 

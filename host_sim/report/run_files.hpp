@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The files `run`, `replay` and `suite` write for one scenario and filter
 // into an output directory (names are prefixed with the filter so several
 // filters can share a scenario's directory):

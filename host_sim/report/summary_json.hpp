@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // summary.json: the machine-readable result of `run`, `replay` and `suite`.
 //   { "schema": "kestrel-sim-summary/1",
 //     "results": { "<scenario>": { "<filter>": { ...entry... } } } }

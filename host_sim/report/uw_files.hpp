@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The files `kestrel-sim uw` writes into its output directory:
 //   uw_runs.csv       one row per Monte Carlo run (the per-run figures);
 //   uw_steps.csv      per frame over the runs: 3D, horizontal and depth RMSE

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PCL-002 (SPEC section 9, paper 002): a DTV passive radar (701 MHz) with the
 // receiver at the origin and the transmitter 8.5 km south, a drone
 // manoeuvring 300-900 m north of the receiver, and every 0.5 s a frame of

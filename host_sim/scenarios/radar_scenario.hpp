@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A single target seen by the polar radar at the origin (SPEC section 4,
 // scenarios S1, S2, S1n, S2n): a truth trajectory sampled at the frame
 // times, plus range and bearing noise whose sigma may change over time

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenario registry: every scenario kestrel-sim knows, by name. A new
 // scenario lives in its own file with a make_*() function and adds one line
 // to the table in registry.cpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scenarios/s2_scurve.hpp"
 
 #include <cmath>

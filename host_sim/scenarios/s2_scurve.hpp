@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // S2, S-curve with slow-and-go and jerk bursts (SPEC section 9, paper 000),
 // and S2n, the same with time-varying noise. Truth is integrated at 1 ms in
 // position, heading and speed:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a scenario is: a named, seeded generator of truth and sensor frames
 // (SPEC section 9). Measurements are in SI units here; stream/ quantises
 // them to the wire units a real sensor front end would send.

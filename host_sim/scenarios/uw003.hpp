@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UW-003 (SPEC section 9, paper 003): four surface beacons at the corners of
 // a 2 km square, a flat seabed at D = 150 m, a target starting at
 // (500, 800, 60) m with velocity (1.2, 1.0, -0.2) m/s plus white

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SI measurements <-> wire units (hal/frame.hpp): range in millimetres,
 // bearing as a binary angle (2^32 per turn), range-rate in mm/s, time in
 // microseconds. Quantisation is what a real sensor front end does before

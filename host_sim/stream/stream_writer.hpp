@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stream files: wire frames back to back (hal/frame_format.hpp), encoded
 // with hal::encode, the same function a sensor front end would use. This is
 // the byte stream StreamFileFeed reads back.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Post-link symbol check of an image: cmake -DNM=<binutils nm>
 #   -DELF=<image> -P check_symbols.cmake
 # Fails if the symbol table names anything from the heap (malloc family,

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # kestrel_float_agreement_program(<codegen library>): the float tracker's
 # agreement program (tests/targets/float_agreement/) built with a Cortex-M
 # board's own code generation and kestrel::core's flags, but linked as a

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Regenerate the evidence tables of docs/footprint.md from the JSON that
 each board build writes to build/<board>/evidence/ (size_report.cmake and
 stack_report.py, run after every link by kestrel_board_evidence).

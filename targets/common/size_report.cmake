@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Post-link size report and size budget of an image:
 #   cmake -DSIZE=<binutils size> -DELF=<image> -DOUT=<size.txt>
 #         [-DJSON=<size.json>] [-DLABEL=<row name>] [-DBOARD=<board>] [-DBUILD_TYPE=<type>]

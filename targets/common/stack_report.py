@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Worst-case stack depth of a board image's call chains (docs/footprint.md).
 
 Inputs:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compile-time configuration of the Cortex-M0+ board (RP2040, e.g. the
 // Raspberry Pi Pico): clocks, the UART link, buffer sizes, tracker
 // capacities and the step budget.

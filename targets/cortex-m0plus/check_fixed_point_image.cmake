@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Post-link check of the fixed-point image (issue 8): cmake -DNM=<nm>
 #   -DELF=<image> -P check_fixed_point_image.cmake
 # The Q31.32 tracker is integer arithmetic only, so the image must hold no

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # How an RP2040 (Cortex-M0+) image is compiled and linked: the Cortex-M4F
 # model (targets/cortex-m4f/image.cmake, flags explained in docs/porting.md)
 # with the M0+ linker script. Included by targets/cortex-m0plus/CMakeLists.txt

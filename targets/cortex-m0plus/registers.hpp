@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The few RP2040 and Cortex-M0+ registers this board touches, as constexpr
 // addresses with the datasheet name, offset and the bits used. No Pico SDK
 // is available, so this file is the register map: RP2040 datasheet

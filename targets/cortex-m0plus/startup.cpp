@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reset and exception entry of the RP2040 image. The image runs from SRAM
 // (rp2040_ram.ld): a debugger loads it over SWD and starts Reset_Handler,
 // which sets the stack pointer itself (a debugger's "jump" does not load SP

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Clock tree, fatal-error path and the board's definition of the core's
 // assertion hook (kestrel/assert.hpp). No stdio.
 #include "system.hpp"

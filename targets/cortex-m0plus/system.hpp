@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Board-level system services of the RP2040 image: the clock tree, the
 // fatal-error path (breakpoint if a debugger is attached, then reset) and
 // the record of the last failed KESTREL_ASSERT.

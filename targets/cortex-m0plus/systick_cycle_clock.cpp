@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SysTick cycle clock (see systick_cycle_clock.hpp) and its interrupt.
 #include "systick_cycle_clock.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CycleClock of the Cortex-M0+ board: ARMv6-M has no DWT cycle counter, so
 // the 24-bit SysTick counter runs at the processor clock (reload 2^24 - 1,
 // counting down) and its interrupt (SysTick_Handler, systick_cycle_clock.cpp)

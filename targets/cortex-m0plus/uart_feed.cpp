@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UART0 driver of the RP2040 (PL011, FIFOs off: one byte per interrupt each
 // way, like the Cortex-M boards' USARTs). See uart_feed.hpp.
 #include "uart_feed.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The board's UART link (UART0 on GPIO0 TX / GPIO1 RX, 8N1 at kUartBaud,
 // FIFOs off so the PL011 interrupts once per byte each way) and the
 // MeasurementFeed built on it, as on the Cortex-M boards: the interrupt

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackSink of the Cortex-M0+ board: KTRK v2 records (targets/common) pushed
 // whole into the UART0 transmit ring, drained by the UART0 interrupt.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compile-time configuration of the Cortex-M4F board (STM32F407): clocks,
 // the UART link, buffer sizes, tracker capacities and the step budget. Every
 // number a reader might want to change for another F4 board is here; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CycleClock of the Cortex-M4F board: the DWT cycle counter at the core
 // clock (targets/common/include/kestrel/board/dwt_cycle_clock.hpp, shared
 // with the Cortex-M7 board). CYCCNT wraps every 2^32 / 168 MHz = 25.6 s;

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # How an STM32F407 (Cortex-M4F) image is compiled and linked. Included by
 # targets/cortex-m4f/CMakeLists.txt for the firmware and by the heap-guard
 # probe project of tests/targets, so the negative test exercises exactly the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Cortex-M4F firmware's main (firmware_main, called by Reset_Handler in
 // startup.cpp): bring up clocks, cycle counter and UART, then run the hal
 // Runner forever, one poll_once() per iteration (SPEC section 8). All large objects (tracker, feed with its frame assembler,

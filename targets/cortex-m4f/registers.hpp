@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The few STM32F407 and Cortex-M4 registers this board touches, as constexpr
 // addresses with the reference-manual name, offset and the bits used. No
 // vendor HAL or CMSIS is available, so this file is the register map; each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reset and exception entry of the STM32F407 image: the vector table (placed
 // first in flash by stm32f407.ld, section .isr_vector), Reset_Handler and
 // the default handlers. Reset_Handler enables the FPU before any code that

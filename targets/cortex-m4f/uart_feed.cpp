@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // USART2 driver (registers, interrupt handler, both rings). See
 // uart_feed.hpp for the data path.
 #include "uart_feed.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The board's UART link (USART2 on PA2/PA3, 8N1 at kUartBaud) and the
 // MeasurementFeed built on it. One interrupt handler serves both directions:
 //   RX: every received byte goes into a hal::ByteRingBuffer (ISR producer,

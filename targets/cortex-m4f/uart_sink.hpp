@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackSink of the Cortex-M4F board: each track report becomes one KTRK v2
 // record (targets/common/include/kestrel/board/ktrk_record.hpp, the record
 // every board emits) pushed whole into the USART2 transmit ring, which the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compile-time configuration of the Cortex-M7 board (STM32H743, e.g. the
 // NUCLEO-H743ZI): clocks, the UART link, buffer sizes, tracker capacities
 // and the step budget. Every number a reader might want to change for

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # How an STM32H743 (Cortex-M7) image is compiled and linked. Included by
 # targets/cortex-m7/CMakeLists.txt for the firmware and by the heap-guard
 # probe project of tests/targets, so the negative test exercises exactly the

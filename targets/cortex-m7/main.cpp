@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Cortex-M7 firmware's main (firmware_main, called by Reset_Handler in
 // startup.cpp): caches on, clocks to 400 MHz, cycle counter and UART, then
 // the hal Runner forever, one poll_once() per iteration (SPEC section 8).

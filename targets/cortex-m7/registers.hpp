@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The few STM32H743 and Cortex-M7 registers this board touches, as constexpr
 // addresses with the reference-manual name, offset and the bits used. No
 // vendor HAL or CMSIS is available, so this file is the register map; each

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Caches, power and clock tree, fatal-error path and the board's definition
 // of the core's assertion hook (kestrel/assert.hpp). No stdio: an assertion
 // leaves its file, line and expression in a .noinit record and resets.

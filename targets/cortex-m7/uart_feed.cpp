@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // USART3 driver of the STM32H743 (registers, interrupt handler, both rings).
 // See uart_feed.hpp for the data path. Differs from the F4's USART in its
 // register layout (ISR/ICR/RDR/TDR) and in that error flags must be cleared

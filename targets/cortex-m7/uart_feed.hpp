@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The board's UART link (USART3 on PD8/PD9, 8N1 at kUartBaud: the ST-LINK
 // virtual COM port of the NUCLEO-H743ZI) and the MeasurementFeed built on
 // it. One interrupt handler serves both directions:

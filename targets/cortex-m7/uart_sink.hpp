@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackSink of the Cortex-M7 board: KTRK v2 records
 // (targets/common/include/kestrel/board/ktrk_record.hpp, the record every
 // board emits) pushed whole into the USART3 transmit ring, drained by the TX

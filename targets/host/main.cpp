@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-host-replay: what a board's main() does, on the host. Open the
 // feed (a stream file instead of a UART), build the tracker, then poll until
 // the feed is exhausted, writing every report to a CSV sink. No simulation,

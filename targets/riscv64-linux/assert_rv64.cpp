@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The riscv64-linux board's definition of the core's assertion hook
 // (kestrel/assert.hpp): file, line and expression to stderr with write(2),
 // then SIGABRT (a core dump where enabled), as abort() would. No stdio and

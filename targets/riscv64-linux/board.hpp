@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The riscv64-linux board's choice of a concrete type for every HAL concept
 // (STYLE "Top-level layout": board.hpp binds each concept), and the tracker
 // it runs. Everything is resolved at compile time: no virtual dispatch.

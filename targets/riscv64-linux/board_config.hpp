@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compile-time configuration of the riscv64-linux board (an embedded-Linux
 // RISC-V SoC: StarFive JH7110, Allwinner D1, SpacemiT K1, ...): tracker
 // capacities, buffer sizes and the step budget. The cycle clock is chosen

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MeasurementFeed of the riscv64-linux board: wire-format bytes from a file
 // descriptor (a stream file, a pipe, or a serial device opened non-blocking
 // by the shell, main.cpp) -> hal::FrameAssembler -> frames, so the board

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackSink of the riscv64-linux board: each report becomes one KTRK v2
 // record (targets/common/include/kestrel/board/ktrk_record.hpp, the record
 // every board emits) in a fixed buffer of kSinkRecords records, written to a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Entry point of the heap-guard image (kestrel-rv64-guard.elf): the board
 // loop and nothing else, linked with no start-up files against static glibc
 // with every allocator wrapped to an undefined symbol. The image is never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The few Linux system calls the tracker's code path makes on the
 // riscv64-linux board (read, write, clock_gettime; kill and exit_group on a
 // failed assertion), issued directly with `ecall` (RISC-V Linux ABI: number

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The board objects of the riscv64-linux board and one loop iteration (see
 // loop.hpp). All large objects are namespace-scope statics, as on the
 // microcontroller boards: the step runs on a stack that holds only its call

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracker's code path on the riscv64-linux board: the board objects
 // (tracker, feed, sink, clock, runner) and one iteration of the board loop.
 // loop.cpp is compiled once, under the firmware rules, and the same object

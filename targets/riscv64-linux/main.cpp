@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-rv64: the riscv64-linux board's main, a static Linux process.
 // The Linux shell around the board loop (loop.cpp): open the input (a
 // stream file, '-' for stdin, or a serial device, put in raw mode at the

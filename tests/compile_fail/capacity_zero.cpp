@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A track table or a scan with capacity 0 must not compile.
 #include "kestrel/tracking/measurement_scan.hpp"
 #include "kestrel/tracking/track_table.hpp"

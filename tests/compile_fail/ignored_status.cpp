@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ignoring a Status is an error under the firmware flags ([[nodiscard]] with
 // -Werror): a dropped predict() result must not compile.
 #include "kestrel/filters/ekf.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An EKF whose motion model is double and measurement model float must not
 // compile: the MeasurementModelFor concept requires one scalar.
 #include "kestrel/filters/ekf.hpp"

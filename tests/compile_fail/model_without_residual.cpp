@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A measurement model without residual() (which owns angle wrapping) must
 // not be accepted by a filter.
 #include "kestrel/filters/ekf.hpp"

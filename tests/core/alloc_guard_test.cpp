@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The allocation guard must see allocations, or every zero-allocation check
 // in this suite would pass vacuously.
 #include <catch2/catch.hpp>

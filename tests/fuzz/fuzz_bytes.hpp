@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading fuzz input bytes as a stream of frames, shared by the tracker
 // fuzz harnesses (radar_tracker_invariants.hpp, pcl_tracker_invariants.hpp,
 // underwater_tracker_invariants.hpp): a reader that yields zeros once the

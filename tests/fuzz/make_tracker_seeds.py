@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Writes the seed corpora of the PCL and underwater tracker fuzzers
 (tests/fuzz/corpus/pcl_tracker/, tests/fuzz/corpus/underwater_tracker/) in
 the byte format of pcl_tracker_invariants.hpp and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: arbitrary bytes as radar frames into the radar tracker
 // in double, float and Q31.32 (radar_tracker_invariants.hpp); a broken
 // invariant aborts with its description. tests/fuzz/CMakeLists.txt builds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The radar tracker driven by arbitrary bytes, for libFuzzer
 // (radar_tracker_fuzz.cpp) and for the regression test that replays the
 // corpus and a seeded batch of inputs under the normal build

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # One short libFuzzer run (CTest label `fuzz`): the seed corpus in the tree
 # is read, new inputs go to a scratch corpus, a crash leaves its input in
 # <work>/artifacts/ and fails the test. Keep a finding as a regression

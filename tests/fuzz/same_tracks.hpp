@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // "Unchanged" for the generic Tracker (tracking/tracker.hpp) in tests and
 // fuzz harnesses: two trackers' tables agree in everything observable; and
 // the invariants every fuzz harness of a Tracker checks after a step.

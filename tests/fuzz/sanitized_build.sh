@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Configure and build tests/fuzz with clang (CTest fixture of the `fuzz` and
 # `asan` tests). Usage: sanitized_build.sh <cmake> <tests/fuzz dir> <build dir>
 set -eu

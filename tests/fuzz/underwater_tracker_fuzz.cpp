@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: arbitrary bytes as sonar frames into the underwater
 // (TOA) tracker in double and float (underwater_tracker_invariants.hpp); a
 // broken invariant aborts with its description. tests/fuzz/CMakeLists.txt builds

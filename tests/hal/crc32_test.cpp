@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CRC-32 against the published check value and zlib, and the incremental
 // API against the one-shot one.
 #include "kestrel/hal/crc32.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FrameAssembler: frames split into random-sized chunks come out in order,
 // garbage and damaged frames are skipped with the documented status and
 // counter, and nothing allocates.

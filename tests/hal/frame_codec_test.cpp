@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // encode/decode of the v1 wire format: golden bytes, round trips, and one
 // scenario per malformed class with the status and `consumed` the header
 // documents. Frames that encode() refuses to produce are hand-built with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fuzz target's invariant checker run in every CTest over a few thousand
 // seeded mutations of valid frame streams, so CI exercises it without
 // libFuzzer. Mutations that re-fix the CRC reach the checks behind it.

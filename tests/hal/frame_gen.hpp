@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helpers: seeded random frames with every field over its full wire
 // range (valid enum values only), field-by-field equality, and encoding into
 // a std::vector. Seeded std::mt19937 so a failing case can be replayed.

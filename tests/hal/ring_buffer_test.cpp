@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ByteRingBuffer: FIFO order, wrap-around, overflow accounting, peek/drop,
 // and a producer/consumer thread pair checking the acquire/release protocol
 // on the host (run it under TSan to check the ordering itself).

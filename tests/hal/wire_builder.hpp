@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test helper: builds wire frames byte by byte with every header and record
 // field settable, including values the encoder refuses to produce (bad
 // magic, other versions, unknown kinds, reserved bits, inconsistent lengths,

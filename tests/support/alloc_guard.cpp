@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Counting of every heap allocation the tests make. Three ways, chosen at
 // compile time:
 //  - glibc, no sanitizer: malloc/calloc/realloc interposed through glibc's

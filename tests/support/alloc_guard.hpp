@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Allocation guard: counts every operator new and malloc made while a guard
 // is alive and forbids Eigen allocations (EIGEN_RUNTIME_NO_MALLOC), so a test
 // can assert that a tracker step touched no heap at all.

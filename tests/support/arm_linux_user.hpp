@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Output and exit for test programs built with a Cortex-M board's code
 // generation (no start files, no C library I/O) and run under qemu-arm's
 // Linux user mode: the Linux write and exit system calls through `svc 0`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Catch2 v2 main for every test executable, with a listener that appends the
 // name of every case it runs to $KESTREL_CASE_LOG when that is set (CTest
 // sets it; tools/ci/check_cases_ran.py compares the log with the listing).

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # <board>_image_evidence: configure a board in its own tree and build its
 # kestrel-evidence target, i.e. exactly the board's images (not core's
 # rules-check object) with their post-link steps: size budget, forbidden

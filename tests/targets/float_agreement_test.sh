@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # <board>_float_matches_host: the float radar tracker on S1 and S1n
 # (tests/targets/float_agreement/float_agreement.cpp), built in the board's
 # own tree (configured by the board's image test) with its code generation

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # <board>_heap_guard_rejects_malloc: prove a board's heap guard and stack
 # budget are real. The probe project (heap_guard_probe/) links tiny images
 # with the board's own options (its image.cmake; for riscv64-linux the

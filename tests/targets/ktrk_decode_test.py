@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """ktrk_decode_reads_v1_and_v2: tools/ktrk_decode.py on a stream of a v1
 record (packed here from the v1 layout), the two v2 records that
 tests/targets/ktrk_record_test.cpp checks the C++ encoder against (a CA

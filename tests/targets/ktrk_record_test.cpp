@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // KTRK v2 (targets/common/include/kestrel/board/ktrk_record.hpp) against the
 // layout its header documents: every field at its offset for a Cartesian CA
 // radar report, a Cartesian CV report and a bistatic PCL report, in double,

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # cortex_m4f_image_has_no_heap: configure and build the Cortex-M4F firmware
 # in its own tree, then check the ELF with arm-none-eabi-nm and -size.
 # usage: m4f_image_test.sh <cmake> <kestrel source dir> <build dir>

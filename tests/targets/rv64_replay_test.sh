@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # riscv64_linux_replay_matches_host: run the riscv64-linux process image
 # (built by riscv64_linux_image_evidence, under qemu-riscv64 user-mode
 # emulation) on a generated S1 stream file, and compare its KTRK track

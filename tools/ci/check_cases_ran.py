@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """After a full ctest run: every Catch2 case each test binary lists ran.
 
 Usage: check_cases_ran.py <build-dir>

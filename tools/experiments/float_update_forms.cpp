@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Float EKF-CA/polar against a double reference over a long run: how far x
 // and P drift, and whether P stays positive definite. Used to choose the
 // structured EKF's covariance update (docs/performance.md, "Update form"):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // KESTREL_ASSERT: for programmer error only (a broken invariant inside core),
 // never for feed data, which gets a Status. On the host it aborts with a
 // message; on a board it calls kestrel_assert_failed(), which the board

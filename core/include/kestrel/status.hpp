@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Status codes and a small Result<T>: how every fallible call in core and hal
 // reports failure without exceptions (STYLE "Errors without exceptions").
 // A status is a value the caller must look at ([[nodiscard]]); feed data never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Host definition of the core's assertion hook: say where, then abort.
 #include <cstdio>
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CsvTrackSink: formatting of the track CSV.
 #include "kestrel/host/csv_track_sink.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StreamFileFeed: decode frames one by one out of an in-memory stream.
 #include "kestrel/host/stream_file_feed.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Chi-square gate table against an independent evaluation of the CDF.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CDKF: equals the textbook KF on a linear model (double, float); bearings
 // straddling +-pi are handled; bad input returns a status with the state
 // unchanged; no heap; plugs into the Tracker.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CRPF: tracks MC-001's middle cell within a stated bound; bit-identical
 // for the same seed (and different for another); a bad measurement returns a
 // status and leaves the filter exactly as it was, PRNG included; systematic

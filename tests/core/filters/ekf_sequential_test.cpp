@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The EKF's sequential whitened update (the fixed-point form): in double it
 // equals the batch Cholesky update; on the fixed-point scalar it follows the
 // double filter, keeps the commit-on-success contract, and refuses a step

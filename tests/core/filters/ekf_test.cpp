@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // EKF: equals a textbook linear KF on a linear model; refuses bad input and
 // leaves its state unchanged; allocation-free.
 #include <catch2/catch.hpp>

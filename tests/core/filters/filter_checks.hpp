@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks every sigma-point filter must pass, written once and instantiated
 // per filter in its own *_test.cpp (ukf_test.cpp, cdkf_test.cpp, ...):
 //  - equals the textbook Kalman filter on a linear model (CV-2D, measuring

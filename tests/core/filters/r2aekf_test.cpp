@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // R2-AEKF (kestrel/filters/r2aekf.hpp), stage by stage. Most tests drive the
 // filter with "controlled" measurements: z = h(x_pred) + (er sqrt(S_rr),
 // eb sqrt(S_bb)) with S the innovation covariance the next update starts

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shared by the sigma-point and CRPF tests: a linear position-only
 // measurement (for the "equals the Kalman filter" checks), the S1 zig-zag
 // truth of SPEC section 9 with seeded polar measurements, the MC-001 truth

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The square-root time update of an affine, block-diagonal motion
 // (kestrel/filters/sqrt_time_update.hpp) against the dense triangularisation
 // qr{[F Sx, Sq]} it replaces (math/triangular.hpp) and the block factor of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SR-CDKF: equals the CDKF to 1e-9 relative over a whole S1 run on CA-2D
 // (velocity and acceleration unobserved); carries a lower-triangular factor;
 // equals the KF on a linear model; bad input returns a status; no heap.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The square-root forms against their plain forms over a whole S1 run
 // (SPEC 5: "in double precision each square-root form must match its plain
 // form to 1e-9 relative"), on CA-2D with the polar radar: velocity and

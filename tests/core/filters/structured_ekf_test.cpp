@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The structured EKF (block-diagonal CA-2D, two-column polar Jacobian,
 // shared linearisation) against the dense EKF on the same models with their
 // structure hidden (Dense<M>), the oracle: every step of an S1-like run,

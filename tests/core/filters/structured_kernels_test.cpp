@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The structure kernels of kestrel/filters/structure.hpp against the dense
 // products they replace, and the structure contracts of the models that
 // expose it (CA-2D: F and Q block-diagonal, F1 unit upper triangular).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CV-2D exposes the block structure of CA-2D (issue 9): kAxisDim,
 // axis_transition(), axis_process_noise() and a unit upper triangular F1.
 // The filters trust the contract (structure.hpp): jacobian(x, dt) equals

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The closed-form time update of the sigma-point filters on an affine
 // (block-diagonal) motion model (issue 9; filters/sigma_points.hpp) against
 // the point form on the same models with their structure hidden

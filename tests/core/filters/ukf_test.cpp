@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UKF: equals the textbook KF on a linear model (double, float); sigma-point
 // means of bearings straddling +-pi are wrap-safe; bad input returns a status
 // with the state unchanged; no heap; plugs into the Tracker.

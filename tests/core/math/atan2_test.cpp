@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // deterministic_atan2 (math/atan2.hpp): within 1 ulp of std::atan2 (glibc's
 // is correctly rounded) on a dense grid over the circle, over magnitudes
 // from 1e-300 to 1e300 with every sign, and on both sides of each reduction

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fixed-size Cholesky helpers: the rank-1 update/downdate matches a fresh
 // factorisation; a downdate that would lose positive definiteness returns a
 // status and leaves L unchanged; the semidefinite factor handles the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // is_positive_definite: agrees with Eigen's LLT on symmetric matrices whose
 // eigenvalues are clearly away from zero, in double, float and Q31.32;
 // refuses indefinite, negative, singular and NaN matrices; state_status

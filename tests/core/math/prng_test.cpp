@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Core PRNG: xoshiro256** matches the reference algorithm; streams are
 // reproducible from the seed and pinned by golden values (so a board and
 // the host can be compared bit for bit); the deterministic logarithm and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CA-2D motion model: F and Q as SPEC section 3 writes them.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CV-2D motion model: F and the DWNA Q as SPEC section 3 writes them, and the
 // noise gain G with sa^2 G G^T = Q.
 #include <catch2/catch.hpp>

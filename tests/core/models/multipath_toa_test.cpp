@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Multipath TOA (SPEC section 4) and CV-3D + sound speed (SPEC section 3):
 // analytic Jacobian against central differences for the direct and the
 // seabed-reflected path; the image source gives the length of the specular

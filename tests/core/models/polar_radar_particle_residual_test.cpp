@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PolarRadar::particle_residual (the CRPF's per-particle cost, paper 001
 // eqs. 5-6): the range residual is residual(z, predict(x))'s bit for bit,
 // the bearing residual within a few ulp of pi (it differs only through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Polar radar: analytic Jacobian against central differences, bearing wrap.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FixedPoint as an Eigen scalar: NumTraits, fixed-size products and
 // reductions against double, allocation-free, and order-independent sums.
 #include <catch2/catch.hpp>

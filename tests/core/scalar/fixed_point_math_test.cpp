@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fixed-point math against exact or long-double references over large random
 // sets. sqrt and hypot are checked exactly (the integer square root is
 // correctly rounded: r^2 - r < N <= r^2 + r for N the exact radicand);

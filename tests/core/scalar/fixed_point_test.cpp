@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FixedPoint arithmetic against exact references: every +, -, *, / and
 // conversion over large random sets equals the exactly rounded result (round
 // to nearest, ties to even) computed with the host's __int128, i.e. an error

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SPEC section 9's S1 (zig-zag with an axial burst) and S1n generated with
 // integer arithmetic only: the truth comes from Q31.32 math (CORDIC sin,
 // exact hypot, atan2), the noise from a splitmix64 generator and an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // wrap_angle in float and double: the fast paths (already wrapped, one turn
 // off) return exactly what the remainder() reduction returns, so moving a
 // bearing residual through them changes no bit of any result.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The PCL front end (kestrel/hal/pcl_adapter.hpp), tested here beside the
 // tracker it ranks against: wire units to [Rb, dRb] (sign and magnitude of
 // dRb = -lambda fD), wrong kind and malformed counts, and the over-capacity

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PCL models (SPEC sections 3 and 4, paper 002): bistatic CV-1D F and Q,
 // the [Rb, dRb] measurement (H = I, R), the Doppler to range-rate conversion
 // (sign and magnitude), bistatic geometry against finite differences, the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The EKF-CA radar tracker on the fixed-point scalars against double, on
 // S1 and S1n frames generated with integer arithmetic and fed through the
 // HAL boundary (tests/core/scalar/s1_integer_scenario.hpp): the same

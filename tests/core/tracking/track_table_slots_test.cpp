@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackTable::active_slots() (the bitmask the tracker iterates instead of
 // scanning the capacity) against a std::set model, for a one-word and a
 // three-word table, including releasing the current slot inside the loop.

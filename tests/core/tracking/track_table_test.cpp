@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackTable against a std::map model: random allocate/release sequences
 // agree on occupancy, ids, and "full".
 #include <catch2/catch.hpp>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tracker under time and covariance faults: a far-off frame is refused and
 // blocks nothing; a sensor whose clock really moved is followed after
 // resync_frames consistent frames; int64 frame times at their extremes; a

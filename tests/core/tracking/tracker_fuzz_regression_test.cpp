@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracker fuzz invariants (tests/fuzz/*_tracker_invariants.hpp) under
 // the normal build: every input of each fuzz corpus, findings included, and
 // a seeded batch of random inputs, for the radar tracker (double, float,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tracker's policies: associators on a competing pair (nearest neighbour
 // against GNN), the sequential-LLR track manager's confirmation and
 // deletion against its formula, and the composed trackers on a target in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Tracker step(): initiation, confirmation, coasting and deletion, gating,
 // bad-frame statuses that leave the table untouched, zero allocations.
 #include <catch2/catch.hpp>

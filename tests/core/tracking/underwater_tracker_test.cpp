@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Underwater tracker step() (SPEC section 9, UW-003): initialisation by
 // multilateration, convergence to the truth with c fixed and no noise, the
 // per-channel gate dropping an injected outlier while keeping the good

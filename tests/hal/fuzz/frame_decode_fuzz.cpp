@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: arbitrary bytes into decode() and into a FrameAssembler,
 // checking the invariants of frame_invariants.hpp; a broken invariant aborts
 // with its description. Build with -DKESTREL_FUZZ=ON and clang, then e.g.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Invariants of decode() and FrameAssembler over arbitrary bytes, shared by
 // the libFuzzer target (frame_decode_fuzz.cpp) and the seeded mutation test
 // that runs in every CTest (frame_fuzz_invariants_test.cpp). Each checker

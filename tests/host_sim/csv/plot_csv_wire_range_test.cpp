@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Plot CSV values the wire format cannot carry (issue: replay accepted a
 // time_s of 1e13 with exit 0 and merged such rows into one frame; ranges,
 // range rates and bearings were clamped or wrapped silently). Each must be

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scenarios against SPEC section 12's reference: paper 000's EKF-CA
 // (qj = 1.6) run alone, every plot used, no gate and no track management,
 // gives RMSE about 130 m on S1 and 109 m on S2, and position NEES about 48

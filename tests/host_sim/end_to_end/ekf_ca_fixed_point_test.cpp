@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fixed-point builds of kestrel-sim's EKF-CA ("ekf-ca-q31_32",
 // "ekf-ca-q23_40") against the double build on SPEC 9's radar scenarios
 // (S1, S2, S1n, S2n; host_sim's own generators, through the wire stream and

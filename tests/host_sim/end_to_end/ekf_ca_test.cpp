@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // End to end: S1 and S2 through the whole host chain (scenario -> wire
 // stream -> StreamFileFeed -> RadarAdapter -> EKF-CA tracker -> sink ->
 // scoring) with paper 000's EKF-CA, qj = 1.6.

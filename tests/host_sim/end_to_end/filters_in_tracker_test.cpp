@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every filter of the family inside the same Tracker, on S1 and on S2 (seed
 // 1 each; wire frames through hal::to_scan, the HAL boundary a board uses;
 // the default 99.9 % gate), with the single-model qj that suits each (S1:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // End to end: the R2-AEKF entries of the filter registry through the whole
 // host chain (scenario -> wire stream -> StreamFileFeed -> RadarAdapter ->
 // tracker -> sink -> scoring), and the per-step scale log.

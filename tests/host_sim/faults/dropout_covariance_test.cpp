@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every radar scenario x every radar filter of the registry (double, float,
 // fixed point; EKF-CA and R2-AEKF), with a sensor dropout of every order of
 // length from one frame to an hour: the reported position covariance is

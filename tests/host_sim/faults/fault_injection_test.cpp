@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Faults injected into a radar stream on the path a board receives it:
 // frames -> wire bytes -> StreamFileFeed (frame assembler) -> RadarAdapter
 // -> Tracker::step, inside hal::Runner (sim::run_stream). Each fault has its

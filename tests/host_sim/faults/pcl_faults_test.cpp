@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Faults injected into a passive-radar stream on the path a board receives
 // it: pcl002 (seed 1: one drone among about 21 clutter candidates a frame,
 // 120 frames at 0.5 s) -> wire bytes -> StreamFileFeed (frame assembler) ->

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Faults injected into a sonar stream on the path a board receives it:
 // uw003 (seed 1, 50 frames at 1 s) -> wire bytes -> StreamFileFeed (frame
 // assembler) -> SonarAdapter -> UnderwaterTracker::step, inside hal::Runner

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Building blocks of the fault-injection tests: a stream of wire frames
 // with each frame sent, dropped, repeated, re-timed or damaged on purpose,
 // and what a fault expects of the Runner. Shared by the sonar and PCL

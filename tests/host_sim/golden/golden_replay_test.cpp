@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Golden replays, one per sensor kind and scalar: a generated run (seed 1)
 // encoded to wire bytes and driven through the board loop (StreamFileFeed ->
 // adapter -> tracker -> sink, inside hal::Runner), its reports compared row

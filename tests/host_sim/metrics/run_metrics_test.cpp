@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SPEC section 10 per-run figures on hand-made error sequences, where every
 // expected value can be worked out on paper.
 #include <catch2/catch.hpp>

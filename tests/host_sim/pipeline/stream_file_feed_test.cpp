@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The host feed over a whole stream: frames come back in order, garbage
 // between frames is skipped to the next magic and reported once, a
 // truncated tail is reported once, then the feed says kNoData.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The board loop must not allocate (SPEC section 1, STYLE "Allocation
 // guard"): a whole S1 run through hal::Runner - feed decode, adapter,
 // Tracker::step, sink publish - inside an AllocationGuard. The stream is

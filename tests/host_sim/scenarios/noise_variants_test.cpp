@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // S1n/S2n against SPEC section 9: range sigma x3 for 60 <= t < 75 s and
 // bearing sigma x3 for 110 <= t < 120 s, and the S1/S2 sensor itself
 // (sr = 3 m, sb = 0.30 deg) checked on the generated plots.

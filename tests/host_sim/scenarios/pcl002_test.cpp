@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PCL-002 against SPEC section 9 (the drone's box and limits, the frame
 // statistics, reproducibility), the PCL metrics on a hand-made run, and an
 // end-to-end check of the tracker through the board loop (goals of issue 5

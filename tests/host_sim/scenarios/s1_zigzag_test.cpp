@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // S1 truth against SPEC section 9: the printed initial velocity and range
 // span, the axial burst, and the analytic velocity against differences of
 // the analytic position (catches a wrong derivative or time scale).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // S2 truth against SPEC section 9: start, range span, the heading changes
 // of the two left/right pairs, the turn radius, the jerk bursts' speed
 // gains and the final speed.

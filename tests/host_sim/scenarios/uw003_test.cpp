@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // UW-003 against SPEC section 9 (start, geometry, sound-speed bounds, noise
 // and outlier statistics, variants sharing the draws, reproducibility), the
 // UW metrics on a hand-made run, and an end-to-end check of the underwater

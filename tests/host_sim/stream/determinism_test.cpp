@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reproducibility (SPEC section 9: "every scenario is reproducible bit for
 // bit"): the same seed gives the same stream bytes, another seed does not;
 // Monte Carlo figures do not depend on the number of threads; and the plot

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Run after each build of a Catch2 test binary (KestrelCatchTests.cmake):
 # lists its cases and writes the CTest script that registers one test per
 # case. Names are handled as strings, never as CMake lists.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Compare the float tracker's reports from the host and from a board's code
 generation (float_agreement.cpp prints them).
 

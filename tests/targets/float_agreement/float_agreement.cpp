@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The float radar tracker on S1 and S1n seed 1 (integer-generated frames,
 // the same bytes on every platform: tests/core/scalar/s1_integer_scenario.hpp),
 // one line per report with the exact bits of its state and of the diagonal

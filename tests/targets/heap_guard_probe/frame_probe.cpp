@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Negative probe of the per-function stack budget: an 8 KiB local array.
 // Compiled with -Wstack-usage=4096 -Werror (what kestrel_board_evidence's
 // FRAME_BUDGET adds to a board's code generation), it must not compile.

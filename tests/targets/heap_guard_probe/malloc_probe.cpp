@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Negative probe: calls malloc and free. The board's link must refuse it
 // with "undefined reference to `__wrap_malloc'".
 #include <cstdlib>

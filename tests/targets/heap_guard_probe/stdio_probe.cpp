@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Probe for the second net: it defines its own puts (so it links without
 // newlib's stdio) and calls it; check_symbols.cmake must still reject the
 // image because a symbol named puts is in it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Chi-square quantiles for ellipsoidal gates (SPEC section 6), as a
 // compile-time table: dimension 1..16 by gate probability (16 = the most TOA
 // channels a sonar frame carries, for gates over a variable subset). Values

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Global nearest-neighbour association: the assignment of tracks to free
 // measurements that minimises the summed d2 of the pairs plus the gate
 // threshold for every track left without one (association/gnn.hpp). Where

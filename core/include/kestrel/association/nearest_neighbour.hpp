@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Nearest-neighbour association: each track, in the order the tracker
 // offers them (oldest first), takes the free measurement of smallest
 // normalised distance d2 inside its gate. Greedy: one pass over the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Probabilistic data association (PDA) for a target in dense clutter
 // (Bar-Shalom and Tse, 1975; Bar-Shalom, Willett and Tian, Tracking and
 // Data Fusion, 2011, section 3.4): instead of betting on one plot, a track

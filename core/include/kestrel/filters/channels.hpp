@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sets of measurement channels: bit i is channel i of a measurement vector.
 // A frame says which channels it carries (an underwater frame: which beacon
 // and path arrived) and a gate may drop more; a filter fuses exactly the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cost-reference particle filter (SPEC section 5; paper 001 section 3.4,
 // eq. 4-8 and table 6, after Miguez, Bugallo and Djuric 2004, "A new class
 // of particle filters for random dynamic systems with unknown statistics",

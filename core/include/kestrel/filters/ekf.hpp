@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Extended Kalman filter on fixed-size storage (SPEC section 5; paper 000
 // section 2-1 and paper 001 section 2 for the equations). The dense update
 // uses the Joseph form P+ = (I - K H) P (I - K H)^T + K R K^T, then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What a filter says about one measurement before (and after) using it: the
 // innovation, its covariance, the normalised squared distance, and per-channel
 // diagnostics in the spirit of PX4's aid-source fields (innovation, variance,

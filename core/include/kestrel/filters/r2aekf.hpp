@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // R2-AEKF: the range/bearing-rescaled, anisotropic-Q adaptive EKF of paper
 // 000 (Park et al., section 2-2, eqs. 7-18) on top of the EKF-CA machinery
 // (kestrel::Ekf with explicit Q and R; no copy of the EKF). Per step it

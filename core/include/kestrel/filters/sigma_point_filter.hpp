@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The sigma-point Kalman filter, additive noise, over a choice of point set
 // (SPEC section 5; paper 001 section 3.2): Ukf is the unscented Kalman
 // filter, scaled unscented transform (table 2, which is van der Merwe 2004

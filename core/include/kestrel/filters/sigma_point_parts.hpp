@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the plain and the square-root sigma-point filters
 // (filters/sigma_point_filter.hpp, filters/sr_sigma_point_filter.hpp) hold
 // alike: their type vocabulary, the two models, the point set's parameters

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sigma points, their weights and their statistics: the point sets that the
 // sigma-point filters (filters/sigma_point_filter.hpp, plain;
 // filters/sr_sigma_point_filter.hpp, square root) take as a template

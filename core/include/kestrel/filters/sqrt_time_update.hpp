@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The square-root time update of an affine, block-diagonal motion model
 // (issue 9): Sx- = qr{[F Sx, sqrt(Q)]}, which filters/sigma_points.hpp's
 // header note shows to be the SR-UKF and SR-CDKF time update of such a

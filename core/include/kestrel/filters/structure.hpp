@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Model structure the generic filters exploit when a model exposes it
 // (issue 9), detected at compile time, with the dense arithmetic as the
 // fallback, the test oracle and the baseline. No filter is written twice: a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Deterministic atan2 for float and double, for the hot loops that evaluate
 // a bearing per particle (the CRPF's cost and risk, paper 001 eqs. 5-6, via
 // PolarRadar::particle_residual). Two reasons to own it, as prng.hpp owns

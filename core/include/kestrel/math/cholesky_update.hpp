@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Lower-triangular Cholesky factors on fixed-size storage: the rank-1 update
 // and downdate the square-root sigma-point filters need (van der Merwe and
 // Wan 2001, "The square-root unscented Kalman filter...", eq. for cholupdate;

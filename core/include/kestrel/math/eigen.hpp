@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one way core includes Eigen. It routes eigen_assert to KESTREL_ASSERT
 // (so a board links no printf/stdio through Eigen), keeps Eigen's static
 // alignment identical in every translation unit, and names the fixed-size

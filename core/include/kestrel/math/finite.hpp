@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finiteness check and symmetrisation for fixed-size Eigen objects, through
 // ScalarTraits so they work for every scalar (fixed point is always finite
 // but may saturate; its traits decide).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ln|S| of a small symmetric positive definite matrix, from the pivots of
 // its LDL^T factorisation (fixed loops, no square root): the track score
 // and the probabilistic association need the Gaussian's normalisation.

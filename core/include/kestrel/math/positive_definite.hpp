@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Positive-definiteness of a symmetric covariance, as the contract every
 // filter holds on the P it commits: a P that fails here is refused with
 // kNotPositiveDefinite and the filter keeps its previous state.

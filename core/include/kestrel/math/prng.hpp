@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Seeded pseudo-random numbers for core (the CRPF's initial cloud, particle
 // kicks and resampling offsets). Requirements: no heap, no global state, a
 // constant bound on every loop, and the same bits on every platform for the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Square-root covariance helpers on fixed-size storage: the "qr{}" step of
 // the square-root sigma-point filters (van der Merwe 2004, SR-UKF and SR-CDKF
 // algorithms: S = qr{[compound matrix]}) and triangular solves with a

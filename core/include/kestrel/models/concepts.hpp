@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Compile-time contracts between models and filters (STYLE "Shape of a model").
 // A filter names its models as template parameters constrained by these
 // concepts; a model that lacks residual() or mixes scalars fails to compile

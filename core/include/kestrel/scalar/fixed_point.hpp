@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The project's fixed-point scalar (SPEC section 2): a signed Q-format number
 // on int64 storage, templated on the fraction bits (Q31.32 by default, Q23.40
 // as the fine-grained option), for FPU-less cores. Every operation is integer

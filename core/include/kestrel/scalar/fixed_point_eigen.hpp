@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // FixedPoint as an Eigen scalar, following Eigen's custom-scalar recipe
 // (doc/CustomizingEigen_CustomScalar.dox): a NumTraits specialisation plus
 // the math functions Eigen calls unqualified (abs, sqrt, isfinite, ... found

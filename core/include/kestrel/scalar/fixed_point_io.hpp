@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Host-side stream output of FixedPoint (tests, logs, host_sim): the value
 // as a double with enough digits, so Catch2 and Eigen's operator<< can print
 // fixed-point scalars and matrices. Never included by core or a board.

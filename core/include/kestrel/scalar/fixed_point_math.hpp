@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Integer-only math for FixedPoint (SPEC section 2) and its ScalarTraits
 // specialisation, so every model and filter runs on it unchanged.
 //   - sqrt(a): integer square root of the exact 128-bit a * 2^F, rounded to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ScalarTraits<S>: the few operations core needs beyond + - * /, chosen at
 // compile time per scalar type (SPEC section 2). double and float map to
 // <cmath>; the fixed-point Q type (kestrel/scalar/fixed_point.hpp) brings its

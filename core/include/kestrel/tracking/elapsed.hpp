@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Differences of frame times. Frame times are any int64 microsecond count a
 // sensor sends; the difference of two need not fit, so it saturates.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The clock of a tracker's accepted frames and its time-fault rules, one
 // copy for every tracker (Tracker, UnderwaterTracker):
 //   - a frame earlier than the last accepted one is refused

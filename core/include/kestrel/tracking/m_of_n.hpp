@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // M-of-N track management: a tentative track is confirmed once M of its
 // first N frames brought a measurement (the frame that started it counts as
 // the first), and deleted as soon as M can no longer be reached within

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One frame of measurements as the core sees it: a time and up to kCapacity
 // measurement vectors in SI units of the scalar type (range m, bearing rad,
 // ...). The HAL converts its integer wire frames into this

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Robust least-squares multilateration of one TOA frame with a known sound
 // speed: how the underwater tracker starts (SPEC section 9, UW-003: "a
 // robust least-squares multilateration of the first frame with c = 1500 m/s:

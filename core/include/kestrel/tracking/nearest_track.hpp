@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How close a measurement lies to the tracks a tracker holds, before the
 // tracker sees the frame: for each measurement, the smallest normalised
 // squared distance nu^T S^-1 nu to any initialised track's prediction at the

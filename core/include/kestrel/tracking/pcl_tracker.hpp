@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ready-made passive-radar (PCL) tracker of paper 002 and SPEC section 9
 // (PCL-002): a linear Kalman filter on the bistatic CV-1D model [Rb, dRb]
 // with the bistatic range / range-rate measurement (H = I), single-point

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The ready-made radar tracker of the walking skeleton: EKF on the CA-2D
 // model with the polar radar measurement (paper 000's EKF-CA), two-point
 // initiation, nearest-neighbour gating, M-of-N management. Boards and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Score-based track management: the sequential log-likelihood ratio of
 // "target" against "clutter" (Blackman and Popoli, Design and Analysis of
 // Modern Tracking Systems, 1999, section 6.2), tested sequentially (Wald).

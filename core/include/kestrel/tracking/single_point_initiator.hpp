@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Single-point initiation (SPEC sections 7 and 9, PCL-002): when one
 // measurement determines the whole state (the passive radar measures Rb and,
 // through the Doppler, dRb), a tentative track starts initialised from one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One sonar frame as the core sees it: a time and up to kCapacity arrivals,
 // each a travel time in seconds labelled by beacon and path (SPEC section 4,
 // TOA with multipath). The HAL converts its integer wire frames into this

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // One track of the table and the report every tracker publishes for it,
 // whatever the sensor kind (SPEC section 7: stable id, status, age, hit/miss
 // counters and the last innovation statistics, per channel in the one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A static table of tracks with compile-time capacity (SPEC section 7). Slots
 // are reused; a track's id is stable for its life and ids are not reused
 // until the 32-bit counter wraps. Every loop is over kCapacity. A bitmask of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The real-time loop of SPEC section 8: one call per frame,
 //   step(scan): validate -> predict every track to the frame time -> gate and
 //   associate (confirmed tracks first, then tentative ones; one track per

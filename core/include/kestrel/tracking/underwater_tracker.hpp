@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The underwater tracker of paper 003 (SPEC sections 3, 4, 6 and 9, UW-003):
 // one target, a few beacons, each frame a set of TOA arrivals labelled by
 // beacon and path (direct or seabed-reflected). It is the one Tracker

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CycleClock: a free-running cycle (or tick) counter for per-step timing.
 // DWT CYCCNT on Cortex-M3/4/7, SysTick on M0+, rdcycle on RISC-V,
 // std::chrono::steady_clock (in ns) on the host. Only differences of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CRC-32 as in IEEE 802.3 and zlib's crc32(): reflected polynomial
 // 0xEDB88320, initial value 0xFFFFFFFF, final xor 0xFFFFFFFF; check value
 // crc32("123456789") = 0xCBF43926. It protects header and payload of a wire

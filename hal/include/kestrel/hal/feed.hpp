@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MeasurementFeed: where frames come from (UART ring buffer on a board, a
 // stream file on the host, a scripted fake in tests). poll() never blocks:
 // it returns kNoData when no complete frame is available yet.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The frames a sensor front end hands to the tracker, in the integer units
 // they arrive in (the wire format of frame_format.hpp carries exactly these
 // fields). Integer units at the HAL boundary keep a fixed-point build free of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Turns a byte stream into frames: bytes arrive in arbitrary pieces (a UART
 // ring buffer on a board, file reads on the host), collect in a fixed linear
 // buffer, and next() decodes the frame at its front. Garbage is skipped by

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pure encode/decode of frames to and from the versioned wire format of
 // frame_format.hpp. No I/O, no allocation; every malformed input yields a
 // status (host-tested and fuzzed), never a crash or a partial write to `out`

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The versioned wire layout of a frame (version 1): byte offsets, sizes and
 // units of every field, and the little-endian load/store helpers the codec
 // uses to read and write them one field at a time. A frame on the wire is

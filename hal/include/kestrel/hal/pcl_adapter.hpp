@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Turns a decoded passive-radar (PCL) wire frame into the core's measurement
 // scan [Rb_m, dRb_mps] (SPEC section 4, bistatic; paper 002 eq. 2):
 // Rb = bistatic_range_mm / 1000, dRb = -lambda * doppler_mhz / 1000, lambda

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Turns a decoded radar wire frame (integer units) into the core's
 // measurement scan ([range_m, bearing_rad] in the tracker's scalar). The
 // conversion is exact integer-to-scalar scaling through ScalarTraits, so a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A lock-free single-producer / single-consumer byte ring: the UART receive
 // interrupt pushes bytes, the main loop pops them into a FrameAssembler.
 // Indices are free-running counters (bytes ever written / read) masked by a

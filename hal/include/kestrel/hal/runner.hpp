@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The loop every board runs: poll the feed for a frame, convert it into the
 // core's scan, run Tracker::step, publish the reports to the sink, and keep
 // the cycle statistics of each step (min, max, last, overruns against a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackSink: where track reports go (UART/CAN on a board, CSV/JSON files on
 // the host, a recording fake in tests). publish() must not block for long:
 // a board sink copies into a TX buffer and returns kTableFull when it is full.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Turns a decoded sonar wire frame (integer nanoseconds, beacon id, path) into
 // the core's TOA scan (seconds in the tracker's scalar), the sonar twin of
 // radar_adapter.hpp. The conversion is an exact integer-to-scalar scaling

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A constant outside the format's range is a compile error, not a silent
 // saturation: Q23.40 holds +-8.4e6.
 #include "kestrel/scalar/fixed_point_math.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A double never converts to fixed point implicitly (explicit constructor).
 #include "kestrel/scalar/fixed_point.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A double -> fixed-point conversion at run time must not compile: the
 // constructor from double is consteval (a board never converts a double).
 #include "kestrel/scalar/fixed_point.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kestrel-fixed-point-cost: instructions per step of the EKF-CA on each
 // scalar (double, float, Q31.32, Q23.40, and double/float with the
 // sequential whitened update), counted by callgrind around the measured

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # cmake -DCXX=<compiler> -DFLAGS=<list> -DSRC=<file> -DOUT=<exe> [-DRUNNER=<emulator>]
 #   -P build_and_run.cmake
 # Builds the golden-hash program with FLAGS and runs it (under RUNNER, e.g.

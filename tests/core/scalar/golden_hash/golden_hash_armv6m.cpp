@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The golden-hash program for the Cortex-M0+ code generation: the same S1
 // runs as golden_hash_main.cpp, compiled with the board's flags
 // (-mcpu=cortex-m0plus -mthumb -mfloat-abi=soft -Os, newlib-nano) and run

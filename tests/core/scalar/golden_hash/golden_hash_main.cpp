@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Standalone golden-hash program (no Catch2, no host board library): runs
 // S1 seed 1 on Q31.32 and Q23.40 and compares the hash of every step's
 // state and covariance with the checked-in constants of

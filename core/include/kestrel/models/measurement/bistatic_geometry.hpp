@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bistatic geometry of a passive radar (SPEC section 4, bistatic; paper 002
 // section II): a stationary transmitter tx and receiver rx, a target at p
 // moving with velocity v. The bistatic range is the extra path length

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Passive-radar (PCL) measurement of bistatic range and range rate (SPEC
 // section 4, bistatic; paper 002 eq. 2). A range-Doppler candidate gives
 // [Rb, fD]; the Doppler is converted to the range rate dRb = -lambda * fD

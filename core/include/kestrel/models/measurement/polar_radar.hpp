@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Monostatic 2D radar at the origin measuring range and bearing (SPEC
 // section 4; paper 000 eq. 3-4): h(X) = [sqrt(x^2+y^2), atan2(y, x)],
 // R = diag(sr^2, sb^2). Bearing is counter-clockwise from +x. residual()

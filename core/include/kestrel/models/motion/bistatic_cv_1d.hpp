@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Constant velocity in bistatic range (SPEC section 3, CV-1D bistatic; paper
 // 002 eq. 1 and 3): state x = [Rb dRb]^T, the bistatic range (m) and its rate
 // (m/s), F(dt) = [[1, dt], [0, 1]]. The process noise is the discrete white

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Constant-acceleration motion in the plane with white-jerk process noise
 // (SPEC section 3, CA-2D; R2-AEKF paper 000, section 2-1). State
 // X = [x vx ax y vy ay]^T: two independent 3-state axes, so F and Q are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Constant-velocity motion in the plane with discrete white-noise
 // acceleration (DWNA) process noise (SPEC section 3, CV-2D; the target model
 // of paper 001, section 2 and eq. 1). State X = [x vx y vy]^T: two

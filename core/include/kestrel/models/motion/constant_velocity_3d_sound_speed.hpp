@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Constant velocity in 3D with the sound speed as an extra random-walk state
 // (SPEC section 3, CV-3D + sound speed; paper 003 eq. 2 and 4-5). State
 // X = [x y z vx vy vz c]^T, depth z positive downward. Per axis the position

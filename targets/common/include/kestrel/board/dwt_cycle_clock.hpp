@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CycleClock on the ARMv7-M Data Watchpoint and Trace unit (Cortex-M3/M4/M7):
 // CYCCNT counts core clock cycles in 32 bits and now_cycles() extends it to
 // 64 bits by counting the wraps it observes (SPEC section 8: the board's

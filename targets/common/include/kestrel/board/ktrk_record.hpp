@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // KTRK v2: the binary track record every board's sink emits, so a consumer
 // reads the same bytes from a Cortex-M UART, a RISC-V Linux process or a
 // file (SPEC section 8: the same core and the same wire formats on every

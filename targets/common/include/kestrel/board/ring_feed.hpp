@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MeasurementFeed over a receive ring that a UART interrupt fills: bytes ->
 // hal::FrameAssembler -> frames, so a board sees exactly what a host replay
 // of the same bytes sees. Never blocks: an empty ring gives kNoData; bytes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackSink of a microcontroller board: each track report becomes one KTRK
 // record (ktrk_record.hpp) pushed whole into a transmit ring, which the
 // board's UART interrupt drains; after each push the sink calls the board's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The host board: which concrete type plays each HAL role (STYLE "targets/"),
 // and the capacities of the radar tracker built on the host. A board main
 // (targets/host/main.cpp) and kestrel-sim both take their types from here,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CsvTrackSink: the host's TrackSink (hal/sink.hpp) writing the track CSV of
 // SPEC section 11, one row per reported track per frame:
 //   time_s,track_id,x_m,y_m,vx_mps,vy_mps,p_xx,p_xy,p_yy,

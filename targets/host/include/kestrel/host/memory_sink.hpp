@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MemorySink: a TrackSink (hal/sink.hpp) that keeps every report in memory
 // for scoring. Its capacity is fixed when it is built and publish() never
 // allocates: a full sink refuses with kTableFull, as a board's TX buffer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SteadyClock: the host's CycleClock (hal/clock.hpp). One "cycle" is one
 // nanosecond of std::chrono::steady_clock, so the Runner's cycle statistics
 // read directly as nanoseconds on the host. steady_clock never goes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // StreamFileFeed: the host's MeasurementFeed (hal/feed.hpp). A stream file is
 // wire frames back to back (frame_format.hpp), exactly the bytes a board's
 // UART would receive. The whole stream is read into memory when the feed is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // TrackRow: one track report flattened to plain doubles in SI units, whatever
 // the filter's scalar and state layout. It is the row of the track CSV (SPEC
 // section 11) and what kestrel-sim scores, so both read a report the same
