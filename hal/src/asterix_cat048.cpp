@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CAT048 record and block reader (asterix_cat048.hpp). Each item's length
 // comes from the UAP table below before any of its bytes is read, and every
 // length is checked against what is left of the record's block, so a wrong

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CAT062 block writer (asterix_cat062.hpp). Every field is range-checked
 // and the whole block's size known before the first byte is written, so a
 // refused block leaves `out` untouched. ASTERIX is big-endian.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Write the seed corpus of the CAT048 fuzzer (tests/fuzz/corpus/asterix_cat048):
 a few valid data blocks, item layouts from the CAT048 specification.
 Usage: python3 tests/fuzz/make_asterix_seeds.py tests/fuzz/corpus/asterix_cat048"""

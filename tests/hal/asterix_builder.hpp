@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Test-side ASTERIX bytes: CAT048 records and data blocks built item by
 // item from the specification's layouts (EUROCONTROL Part 4, ed. 1.31), for
 // the reader's tests, the seeded mutation test and the tshark check's pcap

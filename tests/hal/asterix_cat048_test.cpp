@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CAT048 reader (asterix_cat048.hpp): items decoded from bytes written by
 // hand after the specification's layouts, every UAP item skipped by its
 // length, the grouping of records into frames, one scenario per malformed

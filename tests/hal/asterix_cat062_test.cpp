@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // CAT062 writer (asterix_cat062.hpp): a block compared byte for byte with
 // one written by hand from the specification's layouts, a tracker report
 // turned into a record, a round trip through an independent test-side

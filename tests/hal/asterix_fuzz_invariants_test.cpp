@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The CAT048 fuzz target's invariant checker run in every CTest over
 // seeded mutations of valid CAT048 block streams, so CI exercises it
 // without libFuzzer, and a check that the mutations reach every status.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Host tool for the tshark check (asterix_tshark_check.py): writes a CAT048
 // block and a CAT062 block, each as one UDP datagram (port 8600) in its own
 // pcap file, and expected.json with what Kestrel made of them: the frames

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Wireshark as an independent judge of Kestrel's ASTERIX (CTest label `asterix`).
 
 Runs the pcap tool (asterix_pcap_tool.cpp), decodes its CAT048 and CAT062

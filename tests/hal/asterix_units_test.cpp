@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ASTERIX unit conversions (asterix_units.hpp): the azimuth convention at
 // the four cardinal directions and over every azimuth, time of day and
 // range scalings against hand-computed values.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: arbitrary bytes as one CAT048 record and as a stream of
 // ASTERIX data blocks through the CAT048 reader, checking the invariants of
 // asterix_cat048_invariants.hpp; a broken invariant aborts with its

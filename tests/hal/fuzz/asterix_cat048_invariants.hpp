@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Invariants of the CAT048 reader over arbitrary bytes, shared by the
 // libFuzzer target (asterix_cat048_fuzz.cpp) and the seeded mutation test
 // in every CTest (asterix_fuzz_invariants_test.cpp). Returns nullptr when

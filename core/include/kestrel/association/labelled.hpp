@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Association by label: the sensor has already said whose each measurement
 // is, so there is nothing to choose. A sonar frame is one target's (its
 // arrivals are labelled by beacon and path), so the one track takes it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Single-point initiation from a multilateration fix (paper 003, section
 // 3.3; SPEC sections 6 and 9, UW-003): one sonar frame, whose arrivals are
 // labelled by beacon and path, fixes the position by robust

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Track management for one labelled target (the sonar, paper 003): the
 // track is confirmed when it starts (a multilateration fix is already the
 // evidence M-of-N would wait for) and never deleted for missing data; a

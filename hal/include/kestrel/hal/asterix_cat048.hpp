@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reader of ASTERIX CAT048 (monoradar target reports, EUROCONTROL ASTERIX
 // Part 4, edition 1.31 UAP) into Kestrel radar frames. A data block is
 // CAT (1 byte), LEN (2 bytes, big-endian, the whole block) and records; a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Writer of ASTERIX CAT062 (system track data, EUROCONTROL ASTERIX Part 9,
 // edition 1.19 UAP): one data block of track records from core
 // TrackReports. Items, in FRN order: I062/010 SAC/SIC, I062/015 service

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ASTERIX units to Kestrel wire units and back (EUROCONTROL ASTERIX Part 1
 // and Part 4, CAT048 items I048/140 and I048/040). ASTERIX measures
 // azimuth clockwise from north; Kestrel's bearing is counter-clockwise from
