@@ -640,10 +640,6 @@ class Tracker {
     }
   }
 
-  /// Every measurement still unused starts a seed (or, for a single-point
-  /// initiator, an initialised tentative track). A single-point initiator
-  /// runs before a slot is taken, so a measurement it refuses (kOutOfRange,
-  /// e.g. the PCL zero-Doppler veto) costs no slot and no track id.
   struct NoFilter {};
   /// The filter a FilterStartingInitiator starts before a slot is taken.
   using StartedFilter = std::conditional_t<FilterStartingInitiator<Initiator, Filter>, Filter, NoFilter>;
@@ -656,6 +652,10 @@ class Tracker {
     }
   }
 
+  /// Every measurement still unused starts a seed (or, for a single-point
+  /// initiator, an initialised tentative track). A single-point initiator
+  /// runs before a slot is taken, so a measurement it refuses (kOutOfRange,
+  /// e.g. the PCL zero-Doppler veto) costs no slot and no track id.
   void seed_new(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
     for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
       if (j >= scan.count) break;
