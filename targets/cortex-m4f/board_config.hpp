@@ -12,9 +12,13 @@
 
 namespace kestrel::m4f {
 
-/// Core clock (HCLK) set up by configure_clocks(): HSI 16 MHz / 16 * 336 / 2.
+/// Internal RC oscillator: the reset clock, and the clock the board stays on
+/// when configure_clocks() cannot bring the PLL up (system.hpp).
+inline constexpr std::uint32_t kHsiHz = 16'000'000;
+/// Core clock (HCLK) configure_clocks() aims for: HSI 16 MHz / 16 * 336 / 2.
+/// What the board actually runs at is core_clock_hz() (system.hpp).
 inline constexpr std::uint32_t kCoreClockHz = 168'000'000;
-/// APB1 (USART2's bus) = HCLK / 4.
+/// APB1 (USART2's bus) = HCLK / 4 on the PLL; apb1_clock_hz() at run time.
 inline constexpr std::uint32_t kApb1Hz = kCoreClockHz / 4;
 
 /// UART link to the sensor front end and the track consumer: 8N1, no flow control.
@@ -34,7 +38,9 @@ inline constexpr std::size_t kMaxPlots = 32;
 
 /// A convert+step longer than this counts as an overrun: 10 ms, 2 % of the
 /// 0.5 s frame interval of SPEC section 9's radar scenarios, leaving the rest
-/// of the frame for the link and for a second sensor.
+/// of the frame for the link and for a second sensor. It is a cycle count:
+/// on the HSI fallback (16 MHz) the same work takes 105 ms, still a fifth of
+/// the frame interval, and an overrun still means the step did more work.
 inline constexpr std::uint64_t kStepBudgetCycles = kCoreClockHz / 100;
 
 }  // namespace kestrel::m4f

@@ -40,6 +40,7 @@ inline constexpr std::uint32_t kDwtLarUnlock = 0xC5ACCE55u;  ///< Needed on some
 
 /// NVIC (B3.4): set-enable registers ISER0.. and byte-wide priority registers.
 inline constexpr Address kNvicIser0 = 0xE000E100;
+inline constexpr Address kNvicIspr0 = 0xE000E200;  ///< Set-pending registers ISPR0..
 inline constexpr Address kNvicIpr0 = 0xE000E400;
 
 // ------------------------------------------------------ STM32F407 (RM0090) --
@@ -53,9 +54,13 @@ inline constexpr std::uint32_t kRccCrPllRdy = 1u << 25;
 inline constexpr Address kRccPllcfgr = kRccBase + 0x04;  ///< PLL configuration.
 inline constexpr Address kRccCfgr = kRccBase + 0x08;     ///< Clock configuration (SW, prescalers).
 inline constexpr std::uint32_t kRccCfgrSwMask = 0x3u;
+inline constexpr std::uint32_t kRccCfgrSwHsi = 0x0u;
 inline constexpr std::uint32_t kRccCfgrSwPll = 0x2u;
 inline constexpr std::uint32_t kRccCfgrSwsMask = 0x3u << 2;
 inline constexpr std::uint32_t kRccCfgrSwsPll = 0x2u << 2;
+inline constexpr std::uint32_t kRccCfgrHpreMask = 0xFu << 4;    ///< AHB prescaler; 0 = /1.
+inline constexpr std::uint32_t kRccCfgrPpre1Mask = 0x7u << 10;  ///< APB1 prescaler; 0 = /1.
+inline constexpr std::uint32_t kRccCfgrPpre2Mask = 0x7u << 13;  ///< APB2 prescaler; 0 = /1.
 inline constexpr std::uint32_t kRccCfgrPpre1Div4 = 0x5u << 10;  ///< APB1 = HCLK / 4.
 inline constexpr std::uint32_t kRccCfgrPpre2Div2 = 0x4u << 13;  ///< APB2 = HCLK / 2.
 inline constexpr Address kRccAhb1enr = kRccBase + 0x30;  ///< AHB1 clock enable.

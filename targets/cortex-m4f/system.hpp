@@ -8,11 +8,33 @@
 
 namespace kestrel::m4f {
 
+/// Why configure_clocks() left the core on the HSI (kNone: it did not).
+enum class ClockFallback : std::uint8_t {
+  kNone = 0,           ///< PLL selected: HCLK kCoreClockHz, APB1 kCoreClockHz / 4.
+  kFlashLatency,       ///< FLASH_ACR did not take 5 wait states; the PLL was not started.
+  kPllNoLock,          ///< PLLRDY not set within kPllLockSpins polls; PLL switched off again.
+  kPllNotSelected,     ///< SWS did not report the PLL within the bound; SW set back to HSI.
+};
+
 /// Raise the core to kCoreClockHz (168 MHz) from the internal 16 MHz HSI
 /// through the main PLL, with the flash wait states, prefetch and caches
-/// that speed needs; APB1 = 42 MHz, APB2 = 84 MHz. On a PLL that does not
-/// lock, it reports through kestrel_assert_failed (reset).
-void configure_clocks();
+/// that speed needs; APB1 = 42 MHz, APB2 = 84 MHz. Every wait on the
+/// hardware is bounded. If a step does not complete within its bound (a
+/// board whose PLL never locks, an emulator that does not model the RCC),
+/// the core stays on the HSI at kHsiHz with AHB and APB prescalers at 1
+/// (APB1 = 16 MHz), the reason is recorded (clock_fallback()) and start-up
+/// carries on: a slower board that still tracks and reports, rather than
+/// one that resets for ever. Returns the same value as clock_fallback().
+ClockFallback configure_clocks();
+
+/// What configure_clocks() did; kNone before it runs (the reset clock is
+/// the HSI, which core_clock_hz() then reports).
+[[nodiscard]] ClockFallback clock_fallback();
+/// The core clock (HCLK, also DWT CYCCNT's rate) in Hz as configured now:
+/// kCoreClockHz, or kHsiHz before configure_clocks() and after a fallback.
+[[nodiscard]] std::uint32_t core_clock_hz();
+/// The APB1 clock (USART2's kernel clock) in Hz as configured now.
+[[nodiscard]] std::uint32_t apb1_clock_hz();
 
 /// Stop at a breakpoint when a debugger is attached, then request a system
 /// reset (AIRCR.SYSRESETREQ). Safe from any context, including faults.

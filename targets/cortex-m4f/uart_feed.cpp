@@ -25,9 +25,11 @@ void count(std::atomic<std::uint32_t>& counter) {
 }
 
 // BRR with OVER8 = 0 holds f_APB1 / baud (mantissa and 4-bit fraction of
-// f / (16 * baud)); rounded to nearest. 42 MHz / 115200 -> 365 (0.08 % error).
-constexpr std::uint32_t kBrr = (kApb1Hz + kUartBaud / 2) / kUartBaud;
-static_assert(kBrr >= 16 && kBrr <= 0xFFFF, "USART2: baud rate out of range for APB1");
+// f / (16 * baud)); rounded to nearest. 42 MHz / 115200 -> 365 (0.08 %
+// error) on the PLL, 16 MHz / 115200 -> 139 (0.08 %) on the HSI fallback.
+constexpr std::uint32_t brr(std::uint32_t apb1_hz) { return (apb1_hz + kUartBaud / 2) / kUartBaud; }
+static_assert(brr(kApb1Hz) >= 16 && brr(kApb1Hz) <= 0xFFFF, "USART2: baud rate out of range for APB1");
+static_assert(brr(kHsiHz) >= 16 && brr(kHsiHz) <= 0xFFFF, "USART2: baud rate out of range on the HSI");
 
 constexpr std::uint32_t kNvicPriority = 0x80;  // mid priority (upper 4 bits are implemented)
 
@@ -36,7 +38,7 @@ constexpr std::uint32_t kNvicPriority = 0x80;  // mid priority (upper 4 bits are
 RxRing& usart2_rx_ring() { return g_rx_ring; }
 TxRing& usart2_tx_ring() { return g_tx_ring; }
 
-void usart2_start() {
+void usart2_start(std::uint32_t apb1_hz) {
   using namespace regs;
   reg(kRccAhb1enr) |= kRccAhb1enrGpioaEn;
   reg(kRccApb1enr) |= kRccApb1enrUsart2En;
@@ -53,7 +55,7 @@ void usart2_start() {
   reg(kUsart2Cr1) = 0;  // disabled while configuring; M = 0 (8 data bits), no parity
   reg(kUsart2Cr2) = 0;  // 1 stop bit
   reg(kUsart2Cr3) = 0;  // no flow control, no DMA
-  reg(kUsart2Brr) = kBrr;
+  reg(kUsart2Brr) = brr(apb1_hz);
   reg(kUsart2Cr1) = kUsartCr1Ue | kUsartCr1Te | kUsartCr1Re | kUsartCr1Rxneie;
 
   reinterpret_cast<volatile std::uint8_t*>(kNvicIpr0)[kUsart2Irq] = kNvicPriority;
@@ -65,6 +67,16 @@ void usart2_kick_tx() {
   // between, in which case this sets it again and the ISR takes one extra
   // TXE interrupt, finds the ring empty (or not) and behaves correctly.
   regs::reg(regs::kUsart2Cr1) |= regs::kUsartCr1Txeie;
+}
+
+void usart2_poll_tx() {
+  using namespace regs;
+  // TXEIE is on exactly while the transmit ring holds bytes (the ISR clears
+  // it on an empty ring). With TXE set the hardware has already raised the
+  // interrupt, so setting it pending again changes nothing on the STM32.
+  if ((reg(kUsart2Cr1) & kUsartCr1Txeie) != 0 && (reg(kUsart2Sr) & kUsartSrTxe) != 0) {
+    reg(kNvicIspr0 + 4 * (kUsart2Irq / 32)) = 1u << (kUsart2Irq % 32);
+  }
 }
 
 UartLineErrors usart2_line_errors() {

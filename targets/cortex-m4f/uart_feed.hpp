@@ -27,12 +27,23 @@ RxRing& usart2_rx_ring();
 TxRing& usart2_tx_ring();
 
 /// Clock, pins, baud rate and receive interrupt of USART2. Call once after
-/// configure_clocks() (the divisor assumes kApb1Hz).
-void usart2_start();
+/// configure_clocks(), with the APB1 clock it left (apb1_clock_hz()): the
+/// baud divisor is computed from it, so the link keeps kUartBaud on the
+/// HSI fallback too.
+void usart2_start(std::uint32_t apb1_hz);
 
 /// Make sure the TXE interrupt is on so the ISR drains the transmit ring.
 /// Call after pushing bytes; harmless when already sending.
 void usart2_kick_tx();
+
+/// Main-loop companion of the TXE interrupt: while the transmit ring holds
+/// bytes and the transmitter is empty, set the USART2 interrupt pending so
+/// the ISR sends the next byte. On the STM32 the TXE interrupt is then
+/// already pending and this is redundant (two register reads per call).
+/// It is what moves the transmit ring under QEMU before 8.2, whose USART
+/// model raises its interrupt for RXNE only (docs/porting.md, "Emulated
+/// test"). The ISR stays the ring's only consumer. Call once per loop.
+void usart2_poll_tx();
 
 /// Receive-side line errors counted by the ISR since start (each wraps at 2^32).
 struct UartLineErrors {

@@ -21,12 +21,15 @@
 
 namespace kestrel::board {
 
-template <std::uint32_t kCoreClockHz>
 class DwtCycleClock {
  public:
   /// Enable the trace block (DEMCR.TRCENA), reset CYCCNT and start it.
-  /// Call once at start-up, before the first now_cycles().
-  void start() {
+  /// Call once at start-up, after the clock tree is configured and before
+  /// the first now_cycles().
+  /// @param core_clock_hz the core clock the board actually runs at (which
+  ///        may be a fallback clock rather than the one it aimed for).
+  void start(std::uint32_t core_clock_hz) {
+    core_clock_hz_ = core_clock_hz;
     reg(kDemcr) |= kDemcrTrcEna;
     reg(kDwtLar) = kDwtLarUnlock;
     reg(kDwtCyccnt) = 0;
@@ -43,8 +46,8 @@ class DwtCycleClock {
     return (static_cast<std::uint64_t>(wraps_) << 32) | low;
   }
 
-  /// The core clock the board configures.
-  [[nodiscard]] std::uint64_t cycles_per_second() const { return kCoreClockHz; }
+  /// The core clock given to start().
+  [[nodiscard]] std::uint64_t cycles_per_second() const { return core_clock_hz_; }
 
  private:
   static constexpr std::uintptr_t kDemcr = 0xE000EDFC;      ///< Debug exception and monitor control.
@@ -59,6 +62,7 @@ class DwtCycleClock {
     return *reinterpret_cast<volatile std::uint32_t*>(address);
   }
 
+  std::uint32_t core_clock_hz_ = 0;
   std::uint32_t last_low_ = 0;
   std::uint32_t wraps_ = 0;
 };
