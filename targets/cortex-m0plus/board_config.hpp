@@ -19,8 +19,11 @@ namespace kestrel::m0plus {
 /// 12 MHz * 125 / (6 * 2) = 125 MHz through PLL_SYS (the Pico SDK default).
 inline constexpr std::uint32_t kXoscHz = 12'000'000;
 inline constexpr std::uint32_t kCoreClockHz = 125'000'000;
-/// clk_peri (UART0's clock) = clk_sys.
+/// clk_peri (UART0's clock) = clk_sys; core_clock_hz() at run time.
 inline constexpr std::uint32_t kPeriHz = kCoreClockHz;
+/// Ring oscillator, the reset clock and the last fallback: nominal only,
+/// it varies with process, voltage and temperature (datasheet 2.17).
+inline constexpr std::uint32_t kRoscNominalHz = 6'500'000;
 
 /// UART link to the sensor front end and the track consumer: UART0 on GPIO0
 /// (TX) / GPIO1 (RX), 8N1, no flow control.

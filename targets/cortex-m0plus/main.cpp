@@ -24,9 +24,13 @@ Runner g_runner{g_feed, g_clock, g_tracker, Adapter{}, g_sink, kStepBudgetCycles
 namespace kestrel::m0plus {
 
 [[noreturn]] void firmware_main() {
-  configure_clocks();
-  g_clock.start();
-  uart0_start();
+  // A clock step that does not complete leaves clk_sys on the crystal or
+  // the ring oscillator (clock_fallback() says why); clock and UART take
+  // the rate actually configured.
+  (void)configure_clocks();
+  g_clock.start(core_clock_hz());
+  // Without UART0 there is neither feed nor sink: nothing to run.
+  if (!uart0_start(core_clock_hz())) kestrel_assert_failed(__FILE__, __LINE__, "UART0 stuck in reset");
   for (;;) {
     (void)g_runner.poll_once();
   }

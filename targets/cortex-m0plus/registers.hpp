@@ -77,6 +77,7 @@ inline constexpr Address kPllPrim = kPllSysBase + 0xC;      ///< POSTDIV1 (18:16
 inline constexpr Address kClocksBase = 0x40008000;
 inline constexpr Address kClkRefCtrl = kClocksBase + 0x30;      ///< SRC (1:0): 2 = XOSC.
 inline constexpr Address kClkRefSelected = kClocksBase + 0x38;  ///< One-hot of the selected source.
+inline constexpr std::uint32_t kClkRefSrcRosc = 0u;
 inline constexpr std::uint32_t kClkRefSrcXosc = 2u;
 inline constexpr Address kClkSysCtrl = kClocksBase + 0x3C;      ///< SRC (0): 1 = aux; AUXSRC (7:5): 0 = PLL_SYS.
 inline constexpr std::uint32_t kClkSysSrcAux = 1u << 0;

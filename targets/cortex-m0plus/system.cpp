@@ -22,55 +22,91 @@ static_assert(kXoscHz * kFbdiv / (kPostDiv1 * kPostDiv2) == kCoreClockHz, "PLL s
 // XOSC start-up delay, units of 256 crystal cycles: about 1 ms.
 constexpr std::uint32_t kXoscStartupDelay = (kXoscHz / 1000 + 255) / 256;
 
-constexpr std::uint32_t kSpins = 1'000'000;  // far above any lock time at the ring oscillator's ~6 MHz
+// Bound of every wait below: far above any lock or switch time at the ring
+// oscillator's slowest (about 1.8 MHz: 1'000'000 polls are over 1 s).
+constexpr std::uint32_t kSpins = 1'000'000;
 
-void wait_for(regs::Address address, std::uint32_t mask, std::uint32_t value, const char* what) {
-  std::uint32_t spins = 0;
-  while ((regs::reg(address) & mask) != value) {
-    if (++spins == kSpins) kestrel_assert_failed(__FILE__, __LINE__, what);
+struct ClockState {
+  std::uint32_t core_hz;
+  ClockFallback fallback;
+};
+// Before configure_clocks(): the ring oscillator the boot ROM left running.
+constinit ClockState g_clock{kRoscNominalHz, ClockFallback::kNone};
+
+[[nodiscard]] bool wait_for(regs::Address address, std::uint32_t mask, std::uint32_t value) {
+  for (std::uint32_t spins = 0; spins < kSpins; ++spins) {
+    if ((regs::reg(address) & mask) == value) return true;
   }
+  return false;
 }
 
-void unreset(std::uint32_t mask) {
+/// clk_peri (UART0) from clk_sys, whatever clk_sys ended up on, and the record.
+ClockFallback finish(std::uint32_t core_hz, ClockFallback why) {
   using namespace regs;
-  reg(kResetsReset + kAliasClr) = mask;
-  wait_for(kResetsResetDone, mask, mask, "peripheral stuck in reset");
+  reg(kClkPeriCtrl) = kClkPeriEnable;  // AUXSRC = 0: clk_sys
+  g_clock = ClockState{core_hz, why};
+  return why;
 }
 
 }  // namespace
 
-void configure_clocks() {
-  using namespace regs;
-  unreset(kResetIoBank0 | kResetPadsBank0);
+bool wait_for_reset_done(std::uint32_t mask) { return wait_for(regs::kResetsResetDone, mask, mask); }
 
-  // Crystal oscillator.
+ClockFallback configure_clocks() {
+  using namespace regs;
+  // IO and pads: without them UART0 cannot reach its pins and the board has
+  // no link at all; no other clock or route can stand in, so this is the
+  // one step that still asserts (reset; this SRAM image then returns to the
+  // boot ROM, it does not start again by itself).
+  reg(kResetsReset + kAliasClr) = kResetIoBank0 | kResetPadsBank0;
+  if (!wait_for_reset_done(kResetIoBank0 | kResetPadsBank0)) {
+    kestrel_assert_failed(__FILE__, __LINE__, "IO/pads stuck in reset");
+  }
+
+  // Crystal oscillator. If it never becomes stable, clk_ref and clk_sys
+  // stay on the ring oscillator (reset state): the board runs, but its
+  // rate is only nominal, so the UART baud is approximate (kRoscNominalHz).
   reg(kXoscCtrl) = kXoscFreqRange1To15MHz;
   reg(kXoscStartup) = kXoscStartupDelay;
   reg(kXoscCtrl + kAliasSet) = kXoscEnable;
-  wait_for(kXoscStatus, kXoscStable, kXoscStable, "XOSC not stable");
+  if (!wait_for(kXoscStatus, kXoscStable, kXoscStable)) return finish(kRoscNominalHz, ClockFallback::kXoscNotStable);
+
+  // clk_ref from the crystal first; clk_sys is on clk_ref (reset state), so
+  // from here a failure of the PLL leaves an exact 12 MHz.
+  reg(kClkRefCtrl) = kClkRefSrcXosc;
+  if (!wait_for(kClkRefSelected, 1u << kClkRefSrcXosc, 1u << kClkRefSrcXosc)) {
+    reg(kClkRefCtrl) = kClkRefSrcRosc;
+    return finish(kRoscNominalHz, ClockFallback::kClkRefNotXosc);
+  }
+  reg(kClkSysCtrl + kAliasClr) = kClkSysSrcAux;
+  if (!wait_for(kClkSysSelected, 1u << 0, 1u << 0)) return finish(kXoscHz, ClockFallback::kClkSysNotOnRef);
 
   // PLL_SYS from reset: dividers, power up VCO, wait for lock, post dividers.
   reg(kResetsReset + kAliasSet) = kResetPllSys;
-  unreset(kResetPllSys);
+  reg(kResetsReset + kAliasClr) = kResetPllSys;
+  if (!wait_for_reset_done(kResetPllSys)) return finish(kXoscHz, ClockFallback::kPllNoLock);
   reg(kPllCs) = 1;  // REFDIV
   reg(kPllFbdivInt) = kFbdiv;
   reg(kPllPwr + kAliasClr) = kPllPwrPd | kPllPwrVcoPd;
-  wait_for(kPllCs, kPllCsLock, kPllCsLock, "PLL_SYS did not lock");
+  if (!wait_for(kPllCs, kPllCsLock, kPllCsLock)) {
+    reg(kPllPwr + kAliasSet) = kPllPwrPd | kPllPwrVcoPd;
+    return finish(kXoscHz, ClockFallback::kPllNoLock);
+  }
   reg(kPllPrim) = (kPostDiv1 << 16) | (kPostDiv2 << 12);
   reg(kPllPwr + kAliasClr) = kPllPwrPostDivPd;
 
-  // clk_ref from the crystal; clk_sys: off the aux mux, select PLL_SYS on
-  // it, back onto the aux mux (the glitchless switch of datasheet 2.15.3.2).
-  reg(kClkRefCtrl) = kClkRefSrcXosc;
-  wait_for(kClkRefSelected, 1u << kClkRefSrcXosc, 1u << kClkRefSrcXosc, "clk_ref not on XOSC");
-  reg(kClkSysCtrl + kAliasClr) = kClkSysSrcAux;
-  wait_for(kClkSysSelected, 1u << 0, 1u << 0, "clk_sys not on clk_ref");
+  // clk_sys: select PLL_SYS on the aux mux, then onto the aux mux (the
+  // glitchless switch of datasheet 2.15.3.2); back on clk_ref if it fails.
   reg(kClkSysCtrl) = (0u << 5) | kClkSysSrcAux;  // AUXSRC = PLL_SYS
-  wait_for(kClkSysSelected, 1u << 1, 1u << 1, "clk_sys not on PLL_SYS");
-
-  // clk_peri (UART) from clk_sys.
-  reg(kClkPeriCtrl) = kClkPeriEnable;  // AUXSRC = 0: clk_sys
+  if (!wait_for(kClkSysSelected, 1u << 1, 1u << 1)) {
+    reg(kClkSysCtrl + kAliasClr) = kClkSysSrcAux;
+    return finish(kXoscHz, ClockFallback::kPllNotSelected);
+  }
+  return finish(kCoreClockHz, ClockFallback::kNone);
 }
+
+ClockFallback clock_fallback() { return g_clock.fallback; }
+std::uint32_t core_clock_hz() { return g_clock.core_hz; }
 
 void halt_and_reset() {
   using namespace regs;
@@ -80,6 +116,9 @@ void halt_and_reset() {
   __asm volatile("dsb" ::: "memory");
   reg(kScbAircr) = kAircrVectKey | kAircrSysResetReq;
   __asm volatile("dsb" ::: "memory");
+  // Not a wait on the hardware that may never end: the core itself has just
+  // requested the system reset (AIRCR.SYSRESETREQ), which takes effect
+  // within a few cycles; the loop only keeps it from running on meanwhile.
   for (;;) {
     __asm volatile("nop");
   }

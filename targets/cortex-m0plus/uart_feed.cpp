@@ -6,6 +6,7 @@
 #include <atomic>
 
 #include "registers.hpp"
+#include "system.hpp"
 
 namespace kestrel::m0plus {
 namespace {
@@ -20,11 +21,22 @@ void count(std::atomic<std::uint32_t>& counter) {
 }
 
 // PL011 divisor = f_peri / (16 baud) as 16.6 fixed point, rounded:
-// 125 MHz / (16 * 115200) = 67.817 -> IBRD 67, FBRD 52 (0.0 % error).
-constexpr std::uint32_t kDiv64 = (8u * kPeriHz / kUartBaud + 1u) / 2u;  // round(4 * f / baud)
-constexpr std::uint32_t kIbrd = kDiv64 >> 6;
-constexpr std::uint32_t kFbrd = kDiv64 & 0x3Fu;
-static_assert(kIbrd >= 1 && kIbrd <= 0xFFFF, "UART0: baud rate out of range for clk_peri");
+// 125 MHz / (16 * 115200) = 67.817 -> IBRD 67, FBRD 52 (0.0 % error);
+// 12 MHz (crystal fallback) -> 6.510 -> IBRD 6, FBRD 33 (0.0 %); 6.5 MHz
+// (ring oscillator, nominal) -> IBRD 3, FBRD 34, only as right as the
+// oscillator. One of these three clocks is what configure_clocks() leaves,
+// so the divisors are constants: ARMv6-M has no divide instruction.
+constexpr std::uint32_t div64(std::uint32_t peri_hz) {
+  return static_cast<std::uint32_t>((8ull * peri_hz / kUartBaud + 1u) / 2u);  // round(4 * f / baud)
+}
+static_assert((div64(kPeriHz) >> 6) >= 1 && (div64(kPeriHz) >> 6) <= 0xFFFF, "UART0: baud out of range");
+static_assert((div64(kRoscNominalHz) >> 6) >= 1, "UART0: baud out of range on the ring oscillator");
+std::uint32_t div64_at(std::uint32_t peri_hz) {
+  if (peri_hz == kPeriHz) return div64(kPeriHz);
+  if (peri_hz == kXoscHz) return div64(kXoscHz);
+  return div64(kRoscNominalHz);
+}
+
 
 // ARMv6-M: 2 priority bits (7:6 of each byte); byte 0 of IPR5 is IRQ 20.
 constexpr std::uint32_t kNvicPriority = 0x80;
@@ -34,15 +46,17 @@ constexpr std::uint32_t kNvicPriority = 0x80;
 RxRing& uart0_rx_ring() { return g_rx_ring; }
 TxRing& uart0_tx_ring() { return g_tx_ring; }
 
-void uart0_start() {
+bool uart0_start(std::uint32_t peri_hz) {
   using namespace regs;
   reg(kResetsReset + kAliasSet) = kResetUart0;
   reg(kResetsReset + kAliasClr) = kResetUart0;
-  while ((reg(kResetsResetDone) & kResetUart0) == 0) {
-  }
+  // Bounded (system.cpp's wait): a UART0 that does not leave reset is left
+  // alone, and the caller decides (false).
+  if (!wait_for_reset_done(kResetUart0)) return false;
 
-  reg(kUartIbrd) = kIbrd;
-  reg(kUartFbrd) = kFbrd;
+  const std::uint32_t div = div64_at(peri_hz);
+  reg(kUartIbrd) = div >> 6;
+  reg(kUartFbrd) = div & 0x3Fu;
   reg(kUartLcrH) = kUartLcrHWlen8;  // 8N1, FIFOs off; writing LCR_H latches the divisors
   reg(kUartCr) = kUartCrEn | kUartCrTxe | kUartCrRxe;
   reg(kUartImsc) = kUartIntRx | kUartIntRt;
@@ -55,6 +69,7 @@ void uart0_start() {
   const std::uint32_t shift = 8 * (kUart0Irq % 4);
   reg(ipr) = (reg(ipr) & ~(0xFFu << shift)) | (kNvicPriority << shift);
   reg(kNvicIser) = 1u << kUart0Irq;
+  return true;
 }
 
 void uart0_kick_tx() { regs::reg(regs::kUartImsc + regs::kAliasSet) = regs::kUartIntTx; }

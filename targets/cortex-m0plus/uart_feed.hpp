@@ -21,8 +21,11 @@ RxRing& uart0_rx_ring();
 TxRing& uart0_tx_ring();
 
 /// Reset release, pins, baud rate and receive interrupt of UART0. Call once
-/// after configure_clocks() (the divisors assume kPeriHz).
-void uart0_start();
+/// after configure_clocks(), with the clk_peri it left (core_clock_hz():
+/// kPeriHz, kXoscHz or kRoscNominalHz; the divisors are precomputed for
+/// those three). Returns false, with UART0 left untouched, if UART0 does
+/// not leave reset within the bound.
+[[nodiscard]] bool uart0_start(std::uint32_t peri_hz);
 
 /// Unmask the TX interrupt so the ISR drains the transmit ring (an atomic
 /// set through the RP2040's register alias: no race with the ISR's clear).
