@@ -6,7 +6,7 @@
 // dispatch.
 //
 //   MeasurementFeed -> UartRingFeed  (USART3 RX ring -> FrameAssembler)
-//   CycleClock      -> DwtCycleClock (DWT CYCCNT at 400 MHz, extended to 64 bits)
+//   CycleClock      -> DwtCycleClock (DWT CYCCNT at the core clock, extended to 64 bits)
 //   TrackSink       -> UartTxSink    (KTRK v2 records -> USART3 TX ring)
 //   Adapter/Tracker, by sensor kind (issue 15), in double (FPv5-D16 does
 //   double in hardware):
@@ -40,7 +40,7 @@
 namespace kestrel::m7 {
 
 using Feed = UartRingFeed;
-using Clock = board::DwtCycleClock<kCoreClockHz>;
+using Clock = board::DwtCycleClock;
 using Sink = UartTxSink;
 
 #if defined(KESTREL_BOARD_SENSOR_PCL)

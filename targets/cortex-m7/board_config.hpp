@@ -12,11 +12,15 @@
 
 namespace kestrel::m7 {
 
-/// Core clock (sys_ck) set up by configure_clocks(): HSI 64 MHz / 4 * 50 / 2
+/// Internal RC oscillator (HSI, HSIDIV 1): the reset clock, and the clock
+/// the board stays on when configure_clocks() cannot finish (system.hpp).
+inline constexpr std::uint32_t kHsiHz = 64'000'000;
+/// Core clock (sys_ck) configure_clocks() aims for: HSI 64 MHz / 4 * 50 / 2
 /// through PLL1, at voltage scale 1 (400 MHz is the VOS1 maximum of every
 /// H743 revision; 480 MHz needs VOS0 and revision V).
 inline constexpr std::uint32_t kCoreClockHz = 400'000'000;
 /// AXI/AHB (hclk) = sys_ck / 2; APB1 (USART3's bus and kernel clock) = hclk / 2.
+/// At run time: core_clock_hz() and apb1_clock_hz() (system.hpp).
 inline constexpr std::uint32_t kAhbHz = kCoreClockHz / 2;
 inline constexpr std::uint32_t kApb1Hz = kAhbHz / 2;
 

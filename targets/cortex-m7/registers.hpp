@@ -66,6 +66,7 @@ inline constexpr std::uint32_t kRccCrPll1On = 1u << 24;
 inline constexpr std::uint32_t kRccCrPll1Rdy = 1u << 25;
 inline constexpr Address kRccCfgr = kRccBase + 0x10;  ///< Clock configuration: system clock switch.
 inline constexpr std::uint32_t kRccCfgrSwMask = 0x7u;
+inline constexpr std::uint32_t kRccCfgrSwHsi = 0x0u;
 inline constexpr std::uint32_t kRccCfgrSwPll1 = 0x3u;
 inline constexpr std::uint32_t kRccCfgrSwsMask = 0x7u << 3;
 inline constexpr std::uint32_t kRccCfgrSwsPll1 = 0x3u << 3;

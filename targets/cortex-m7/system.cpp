@@ -18,7 +18,6 @@ __attribute__((section(".noinit"))) AssertRecord g_last_assert;
 // range 8-16 MHz), VCO = ref * N = 800 MHz (wide range 192-960 MHz),
 // sys_ck = VCO / P = 400 MHz; Q and R = VCO / 4 = 200 MHz (pll1_q_ck is the
 // default SDMMC/SPI kernel clock, which must stay <= 200 MHz).
-constexpr std::uint32_t kHsiHz = 64'000'000;
 constexpr std::uint32_t kPllM = 4;
 constexpr std::uint32_t kPllN = 50;
 constexpr std::uint32_t kPllP = 2;
@@ -40,11 +39,39 @@ constexpr std::uint32_t kFlashWrHighFreq = 2u << 4;
 // above their datasheet times (PLL lock < 150 us) at 64 MHz.
 constexpr std::uint32_t kSpins = 1'000'000;
 
-void wait_for(regs::Address address, std::uint32_t mask, std::uint32_t value, const char* what) {
-  std::uint32_t spins = 0;
-  while ((regs::reg(address) & mask) != value) {
-    if (++spins == kSpins) kestrel_assert_failed(__FILE__, __LINE__, what);
+// Clock tree as configured now: constant-initialised to the reset state
+// (HSI 64 MHz, every prescaler 1), which is also what a fallback leaves.
+struct ClockState {
+  std::uint32_t core_hz;
+  std::uint32_t apb1_hz;
+  ClockFallback fallback;
+};
+constinit ClockState g_clock{kHsiHz, kHsiHz, ClockFallback::kNone};
+
+/// Poll until (register & mask) == value, at most kSpins times.
+[[nodiscard]] bool wait_for(regs::Address address, std::uint32_t mask, std::uint32_t value) {
+  for (std::uint32_t spins = 0; spins < kSpins; ++spins) {
+    if ((regs::reg(address) & mask) == value) return true;
   }
+  return false;
+}
+
+/// Stay on (or go back to) the HSI at its reset settings: system clock
+/// switch to HSI, PLL1 off, every bus prescaler back to its reset value 1
+/// (the state the part boots in, valid at any voltage scale). Supply,
+/// voltage scale and flash wait states are left as they are: each is valid
+/// for 64 MHz whether or not its step completed (the reset latency, 7 wait
+/// states, is the slowest). The switch to HSI, the reset clock, which is
+/// never switched off here, is not waited for.
+ClockFallback fall_back_to_hsi(ClockFallback why) {
+  using namespace regs;
+  reg(kRccCfgr) = (reg(kRccCfgr) & ~kRccCfgrSwMask) | kRccCfgrSwHsi;
+  reg(kRccCr) &= ~kRccCrPll1On;
+  reg(kRccD1cfgr) = 0;
+  reg(kRccD2cfgr) = 0;
+  reg(kRccD3cfgr) = 0;
+  g_clock = ClockState{kHsiHz, kHsiHz, why};
+  return why;
 }
 
 }  // namespace
@@ -76,22 +103,24 @@ void enable_caches() {
   __asm volatile("dsb\n\tisb" ::: "memory");
 }
 
-void configure_clocks() {
+ClockFallback configure_clocks() {
   using namespace regs;
   // 1. Supply: the core from the LDO (the NUCLEO-H743ZI's wiring). CR3 can
   //    be written once after reset; then wait until the regulator follows.
   reg(kPwrCr3) = (reg(kPwrCr3) & ~(kPwrCr3Bypass | kPwrCr3LdoEn | kPwrCr3ScuEn)) | kPwrCr3LdoEn;
-  wait_for(kPwrCsr1, kPwrCsr1ActVosRdy, kPwrCsr1ActVosRdy, "supply not ready");
+  if (!wait_for(kPwrCsr1, kPwrCsr1ActVosRdy, kPwrCsr1ActVosRdy)) {
+    return fall_back_to_hsi(ClockFallback::kSupplyNotReady);
+  }
 
   // 2. Voltage scale 1 (needed above 300 MHz).
   reg(kPwrD3cr) = (reg(kPwrD3cr) & ~kPwrD3crVosMask) | kPwrD3crVos1;
-  wait_for(kPwrD3cr, kPwrD3crVosRdy, kPwrD3crVosRdy, "VOS1 not reached");
+  if (!wait_for(kPwrD3cr, kPwrD3crVosRdy, kPwrD3crVosRdy)) return fall_back_to_hsi(ClockFallback::kVoltageScale);
 
   // 3. Flash wait states before the clock goes up.
   reg(kFlashAcr) = (reg(kFlashAcr) & ~(kFlashAcrLatencyMask | kFlashAcrWrHighFreqMask)) | kFlashLatency |
                    kFlashWrHighFreq;
   if ((reg(kFlashAcr) & kFlashAcrLatencyMask) != kFlashLatency) {
-    kestrel_assert_failed(__FILE__, __LINE__, "flash latency not accepted");
+    return fall_back_to_hsi(ClockFallback::kFlashLatency);
   }
 
   // 4. PLL1: source HSI, M; input range, wide VCO, integer mode, P output on.
@@ -101,7 +130,7 @@ void configure_clocks() {
       kRccPllcfgrPll1Rge8To16 | kRccPllcfgrDivP1En;
   reg(kRccPll1divr) = (kPllN - 1u) | ((kPllP - 1u) << 9) | ((kPllQ - 1u) << 16) | ((kPllR - 1u) << 24);
   reg(kRccCr) |= kRccCrPll1On;
-  wait_for(kRccCr, kRccCrPll1Rdy, kRccCrPll1Rdy, "PLL1 did not lock");
+  if (!wait_for(kRccCr, kRccCrPll1Rdy, kRccCrPll1Rdy)) return fall_back_to_hsi(ClockFallback::kPllNoLock);
 
   // 5. Bus prescalers before the switch, so hclk never exceeds 200 MHz.
   reg(kRccD1cfgr) = kRccD1cfgrHpreDiv2 | kRccD1cfgrD1ppreDiv2;  // D1CPRE = /1
@@ -110,8 +139,16 @@ void configure_clocks() {
 
   // 6. System clock switch to PLL1.
   reg(kRccCfgr) = (reg(kRccCfgr) & ~kRccCfgrSwMask) | kRccCfgrSwPll1;
-  wait_for(kRccCfgr, kRccCfgrSwsMask, kRccCfgrSwsPll1, "PLL1 not selected");
+  if (!wait_for(kRccCfgr, kRccCfgrSwsMask, kRccCfgrSwsPll1)) {
+    return fall_back_to_hsi(ClockFallback::kPllNotSelected);
+  }
+  g_clock = ClockState{kCoreClockHz, kApb1Hz, ClockFallback::kNone};
+  return ClockFallback::kNone;
 }
+
+ClockFallback clock_fallback() { return g_clock.fallback; }
+std::uint32_t core_clock_hz() { return g_clock.core_hz; }
+std::uint32_t apb1_clock_hz() { return g_clock.apb1_hz; }
 
 void halt_and_reset() {
   using namespace regs;
@@ -121,8 +158,11 @@ void halt_and_reset() {
   __asm volatile("dsb" ::: "memory");
   reg(kScbAircr) = kAircrVectKey | (reg(kScbAircr) & (0x7u << 8)) | kAircrSysResetReq;  // keep PRIGROUP
   __asm volatile("dsb" ::: "memory");
+  // Not a wait on the hardware that may never end: the core itself has just
+  // requested the system reset (AIRCR.SYSRESETREQ), which takes effect
+  // within a few cycles; the loop only keeps it from running on meanwhile.
   for (;;) {
-    __asm volatile("nop");  // until the reset takes effect
+    __asm volatile("nop");
   }
 }
 

@@ -15,11 +15,30 @@ namespace kestrel::m7 {
 /// where all data lives, is never cached).
 void enable_caches();
 
+/// Why configure_clocks() left the core on the HSI (kNone: it did not).
+enum class ClockFallback : std::uint8_t {
+  kNone = 0,        ///< PLL1 selected: sys_ck kCoreClockHz, APB1 kApb1Hz.
+  kSupplyNotReady,  ///< PWR_CSR1.ACTVOSRDY not set within the bound.
+  kVoltageScale,    ///< PWR_D3CR.VOSRDY not set after asking for scale 1.
+  kFlashLatency,    ///< FLASH_ACR did not read back the wait states.
+  kPllNoLock,       ///< PLL1RDY not set within the bound; PLL1 switched off again.
+  kPllNotSelected,  ///< SWS did not report PLL1; SW set back to HSI, prescalers to 1.
+};
+
 /// Configure the LDO supply, voltage scale 1, flash wait states, and raise
 /// the core to kCoreClockHz (400 MHz) from the internal 64 MHz HSI through
-/// PLL1; hclk = 200 MHz, APB1..4 = 100 MHz. On a step that never completes
-/// it reports through kestrel_assert_failed (reset).
-void configure_clocks();
+/// PLL1; hclk = 200 MHz, APB1..4 = 100 MHz. Every wait is bounded: on a
+/// step that does not complete the core stays on the HSI at kHsiHz with
+/// every prescaler 1 (the reset clock tree), the reason is recorded
+/// (clock_fallback()) and start-up carries on. Returns clock_fallback().
+ClockFallback configure_clocks();
+
+/// What configure_clocks() did; kNone before it runs.
+[[nodiscard]] ClockFallback clock_fallback();
+/// The core clock (sys_ck, DWT CYCCNT's rate) in Hz as configured now.
+[[nodiscard]] std::uint32_t core_clock_hz();
+/// The APB1 clock (USART3's kernel clock) in Hz as configured now.
+[[nodiscard]] std::uint32_t apb1_clock_hz();
 
 /// Stop at a breakpoint when a debugger is attached, then request a system
 /// reset (AIRCR.SYSRESETREQ). Safe from any context, including faults.

@@ -27,9 +27,11 @@ void count(std::atomic<std::uint32_t>& counter) {
 }
 
 // BRR with OVER8 = 0 and PRESC = 0 holds f_ker / baud, rounded to nearest.
-// 100 MHz / 115200 -> 868 (0.01 % error).
-constexpr std::uint32_t kBrr = (kApb1Hz + kUartBaud / 2) / kUartBaud;
-static_assert(kBrr >= 16 && kBrr <= 0xFFFF, "USART3: baud rate out of range for its kernel clock");
+// 100 MHz / 115200 -> 868 (0.01 % error); on the HSI fallback 64 MHz ->
+// 556 (0.08 %).
+constexpr std::uint32_t brr(std::uint32_t apb1_hz) { return (apb1_hz + kUartBaud / 2) / kUartBaud; }
+static_assert(brr(kApb1Hz) >= 16 && brr(kApb1Hz) <= 0xFFFF, "USART3: baud rate out of range for its kernel clock");
+static_assert(brr(kHsiHz) >= 16 && brr(kHsiHz) <= 0xFFFF, "USART3: baud rate out of range on the HSI");
 
 constexpr std::uint32_t kNvicPriority = 0x80;  // mid priority (upper 4 bits are implemented)
 
@@ -38,7 +40,7 @@ constexpr std::uint32_t kNvicPriority = 0x80;  // mid priority (upper 4 bits are
 RxRing& usart3_rx_ring() { return g_rx_ring; }
 TxRing& usart3_tx_ring() { return g_tx_ring; }
 
-void usart3_start() {
+void usart3_start(std::uint32_t apb1_hz) {
   using namespace regs;
   reg(kRccAhb4enr) |= kRccAhb4enrGpiodEn;
   reg(kRccApb1lenr) |= kRccApb1lenrUsart3En;
@@ -56,7 +58,7 @@ void usart3_start() {
   reg(kUsart3Cr1) = 0;  // disabled while configuring; 8 data bits, no parity, FIFO off
   reg(kUsart3Cr2) = 0;  // 1 stop bit
   reg(kUsart3Cr3) = 0;  // no flow control, no DMA
-  reg(kUsart3Brr) = kBrr;
+  reg(kUsart3Brr) = brr(apb1_hz);
   reg(kUsart3Cr1) = kUsartCr1Ue | kUsartCr1Te | kUsartCr1Re | kUsartCr1Rxneie;
 
   reinterpret_cast<volatile std::uint8_t*>(kNvicIpr0)[kUsart3Irq] = kNvicPriority;

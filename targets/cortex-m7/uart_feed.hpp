@@ -28,8 +28,8 @@ RxRing& usart3_rx_ring();
 TxRing& usart3_tx_ring();
 
 /// Clocks, pins, baud rate and receive interrupt of USART3. Call once after
-/// configure_clocks() (the divisor assumes kApb1Hz).
-void usart3_start();
+/// configure_clocks(), with the APB1 clock it left (apb1_clock_hz()).
+void usart3_start(std::uint32_t apb1_hz);
 
 /// Make sure the TXE interrupt is on so the ISR drains the transmit ring.
 /// Call after pushing bytes; harmless when already sending.
