@@ -14,7 +14,7 @@ PACKAGES=(
   cmake make g++ git
   libeigen3-dev catch2
   gcc-arm-none-eabi libnewlib-arm-none-eabi libstdc++-arm-none-eabi-newlib
-  g++-riscv64-linux-gnu qemu-user
+  g++-riscv64-linux-gnu qemu-user qemu-system-arm
   libbenchmark-dev libcli11-dev nlohmann-json3-dev
   python3 python3-matplotlib
   valgrind
