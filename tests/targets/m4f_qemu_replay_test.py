@@ -26,7 +26,10 @@ the STM32's clock tree or flash interface, so the image runs on its HSI
 fallback (docs/porting.md, "Boot without hanging"); emulated cycle counts
 mean nothing and are not checked.
 
-Checks (each can fail): the decoder skipped no byte and found no bad CRC;
+Checks (each can fail): the image took the clock fallback QEMU forces
+(read through QEMU's monitor at the address of the board's clock state:
+FLASH_ACR reads 0, so kFlashLatency, core and APB1 at 16 MHz); the decoder
+skipped no byte and found no bad CRC;
 as many records as each host replay's rows; each record has the host's
 frame time, track id, status and layout; positions, velocities and
 accelerations within the tolerances below of the host float replay. The run
@@ -39,9 +42,12 @@ exit: 0 pass, 1 fail, 77 skip (no qemu-system-arm, or an input was not built).
 import argparse
 import csv
 import os
+import re
 import shutil
+import socket
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 
@@ -56,6 +62,10 @@ TOL = {"x_mm": 50.0, "y_mm": 50.0, "vx_mmps": 30.0, "vy_mmps": 30.0, "ax_mmps2":
 HOST_COLUMN = {"x_mm": "x_m", "y_mm": "y_m", "vx_mmps": "vx_mps", "vy_mmps": "vy_mps", "ax_mmps2": "ax_mps2",
                "ay_mmps2": "ay_mps2"}
 RECORD_BYTES = 64  # KTRK v2
+# kestrel::m4f's ClockState in system.cpp: core_hz, apb1_hz (uint32), then
+# ClockFallback (uint8, kFlashLatency = 1) padded to a word.
+CLOCK_SYMBOL = "_ZN7kestrel3m4f12_GLOBAL__N_17g_clockE"
+EXPECTED_CLOCK = (16_000_000, 16_000_000, 1)
 
 
 def skip(msg):
@@ -68,10 +78,43 @@ def fail(msg):
     sys.exit(1)
 
 
-def run_qemu(args, stream, expected_records):
-    """Boot the image, feed `stream` at args.rate bytes/s, return (output bytes, seconds, how it ended)."""
-    cmd = [args.qemu, "-M", "netduinoplus2", "-nographic", "-monitor", "none", "-serial", "null", "-serial", "stdio",
-           "-kernel", args.elf]
+def symbol_address(nm, elf, name):
+    r = subprocess.run([nm, elf], capture_output=True, text=True, timeout=60)
+    for line in r.stdout.splitlines():
+        f = line.split()
+        if len(f) == 3 and f[2] == name:
+            return int(f[0], 16)
+    return None
+
+
+def read_words(monitor_path, address, count, timeout=10.0):
+    """Read `count` 32-bit words of guest memory with the HMP command xp; None if the monitor does not answer."""
+    deadline = time.monotonic() + timeout
+    with socket.socket(socket.AF_UNIX, socket.SOCK_STREAM) as sock:
+        sock.settimeout(timeout)
+        sock.connect(monitor_path)
+        sock.sendall(b"xp /%dwx 0x%x\n" % (count, address))
+        text = b""
+        pattern = re.compile(rb"%x:((?:\s+0x[0-9a-f]{8}){%d})" % (address, count))
+        while time.monotonic() < deadline:
+            chunk = sock.recv(4096)
+            if not chunk:
+                break
+            text += chunk
+            m = pattern.search(text)
+            if m:
+                return tuple(int(w, 16) for w in m.group(1).split())
+    return None
+
+
+def run_qemu(args, stream, expected_records, clock_address):
+    """Boot the image, feed `stream` at args.rate bytes/s; return (output bytes, seconds, how it ended,
+    the clock state words or None)."""
+    # A short path: a Unix socket's name is limited to about 100 bytes.
+    sock_dir = tempfile.mkdtemp(prefix="kestrel-qemu-")
+    monitor = os.path.join(sock_dir, "monitor.sock")
+    cmd = [args.qemu, "-M", "netduinoplus2", "-nographic", "-monitor", "unix:%s,server=on,wait=off" % monitor,
+           "-serial", "null", "-serial", "stdio", "-kernel", args.elf]
     print("running: " + " ".join(cmd))
     start = time.monotonic()
     proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
@@ -128,6 +171,12 @@ def run_qemu(args, stream, expected_records):
         if proc.poll() is not None:
             ended = "QEMU exited with status %d" % proc.returncode
         print("fed %d of %d stream bytes in %.1f s" % (sent, len(stream), fed - t0))
+        clock = None
+        if proc.poll() is None:
+            try:
+                clock = read_words(monitor, clock_address, 3)
+            except OSError as e:
+                print("QEMU monitor: %s" % e)
     finally:
         if proc.poll() is None:
             proc.terminate()
@@ -138,15 +187,17 @@ def run_qemu(args, stream, expected_records):
                 proc.wait()
         for r in readers:
             r.join(timeout=5)
+        shutil.rmtree(sock_dir, ignore_errors=True)
     elapsed = time.monotonic() - start
     if err:
         print("qemu stderr: " + err.decode(errors="replace").strip())
-    return bytes(out), elapsed, ended
+    return bytes(out), elapsed, ended, clock
 
 
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--qemu", default="qemu-system-arm")
+    p.add_argument("--nm", default="arm-none-eabi-nm")
     p.add_argument("--elf", required=True)
     p.add_argument("--sim", required=True, help="kestrel-sim (generates the S1 stream, host float replay)")
     p.add_argument("--host-replay", required=True, help="kestrel-host-replay")
@@ -189,10 +240,20 @@ def main():
     print("stream %s: %d bytes; host replay: %d track reports (float), %d (double)"
           % (stream_path, len(stream), len(host), len(host_double)))
 
-    out, elapsed, ended = run_qemu(args, stream, len(host))
+    clock_address = symbol_address(args.nm, args.elf, CLOCK_SYMBOL)
+    if clock_address is None:
+        fail("%s has no symbol %s (the board's clock state)" % (args.elf, CLOCK_SYMBOL))
+    out, elapsed, ended, clock = run_qemu(args, stream, len(host), clock_address)
     ktrk = os.path.join(args.work, "board.ktrk")
     open(ktrk, "wb").write(out)
     print("QEMU ran %.1f s (%s); the board wrote %d bytes" % (elapsed, ended, len(out)))
+    if clock is None:
+        fail("could not read the board's clock state through the QEMU monitor")
+    clock = (clock[0], clock[1], clock[2] & 0xFF)
+    print("clock state at 0x%08x: core %d Hz, APB1 %d Hz, fallback %d" % ((clock_address,) + clock))
+    if clock != EXPECTED_CLOCK:
+        fail("clock state %s, expected %s (HSI fallback kFlashLatency: QEMU does not model FLASH_ACR)"
+             % (clock, EXPECTED_CLOCK))
 
     board_csv = os.path.join(args.work, "board.csv")
     with open(board_csv, "w") as f:
