@@ -37,7 +37,6 @@ std::uint32_t div64_at(std::uint32_t peri_hz) {
   return div64(kRoscNominalHz);
 }
 
-
 // ARMv6-M: 2 priority bits (7:6 of each byte); byte 0 of IPR5 is IRQ 20.
 constexpr std::uint32_t kNvicPriority = 0x80;
 
