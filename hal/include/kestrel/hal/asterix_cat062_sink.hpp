@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 
 #include "kestrel/hal/asterix_cat062.hpp"
 #include "kestrel/status.hpp"
@@ -44,7 +45,7 @@ class Cat062Sink {
   static constexpr std::size_t kMaxBlockBytes = kBlockHeaderSize + 28;
 
   /// @param source SAC/SIC (and optional service id) of every block.
-  explicit Cat062Sink(Tx tx, Cat062Source source = {}) : tx_(tx), source_(source) {}
+  explicit Cat062Sink(Tx tx, Cat062Source source = {}) : tx_(std::move(tx)), source_(source) {}
 
   /// Publish one report as one CAT062 data block.
   /// @return kOk; kOutOfRange or kNonFinite (the report cannot be written in
