@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim generate`: one seeded run of a scenario as files a user can
-// replay or inspect: the wire stream, its truth and its plots as CSV.
+// replay or inspect: the wire stream, its truth and its plots as CSV, and
+// with --asterix the plots as ASTERIX CAT048 data blocks.
 #include <cstdio>
 #include <filesystem>
 
@@ -8,6 +9,7 @@
 #include "csv/radar_plot_csv.hpp"
 #include "csv/truth_csv.hpp"
 #include "scenarios/registry.hpp"
+#include "stream/asterix_stream.hpp"
 #include "stream/quantise.hpp"
 #include "stream/stream_writer.hpp"
 
@@ -33,6 +35,14 @@ int cmd_generate(const GenerateOptions& o) {
   std::printf("%s seed %llu: %zu frames, %zu bytes\n  stream %s\n  truth  %s\n  plots  %s\n",
               scenario->info().name.c_str(), static_cast<unsigned long long>(o.seed), run.frames.size(),
               bytes.size(), stream_path.c_str(), truth_path.c_str(), plots_path.c_str());
+  if (o.asterix) {
+    // From the scenario's own plots, not the wire-quantised ones: ASTERIX
+    // is a sensor's output format in its own right, rounded once.
+    const std::vector<std::uint8_t> ast = encode_cat048_stream(run.frames, static_cast<std::uint8_t>(o.asterix_sac));
+    const auto ast_path = std::filesystem::path(stream_path).replace_extension(".ast");
+    write_bytes(ast_path, ast);
+    std::printf("  cat048 %s (%zu bytes, one data block per frame)\n", ast_path.c_str(), ast.size());
+  }
   return 0;
 }
 

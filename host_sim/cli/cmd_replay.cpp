@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// `kestrel-sim replay`: run a filter over recorded data, a wire stream file
-// or a radar plot CSV (SPEC section 11), through the same board loop as the
-// simulation. With a truth CSV the run is scored like a scenario run.
+// `kestrel-sim replay`: run a filter over recorded data, a wire stream file,
+// a radar plot CSV (SPEC section 11) or an ASTERIX CAT048 recording, through
+// the same board loop as the simulation. With a truth CSV the run is scored
+// like a scenario run; with --asterix-out its reports are also CAT062.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -20,6 +21,7 @@
 #include "plots/plot_runner.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_json.hpp"
+#include "stream/asterix_stream.hpp"
 #include "stream/quantise.hpp"
 #include "stream/stream_writer.hpp"
 
@@ -29,7 +31,7 @@ namespace {
 
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot open stream file '" + path.string() + "'");
+  if (!in) throw std::runtime_error("cannot open '" + path.string() + "'");
   return std::vector<std::uint8_t>((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
@@ -56,17 +58,55 @@ void print_status_counts(const hal::RunnerStats& s) {
   std::printf("\n");
 }
 
+void print_asterix_counts(const std::string& source, const AsterixReadCounts& c) {
+  std::printf("ASTERIX %s: %u CAT048 blocks, %u records, %u plots in %u frames; %u blocks of other categories "
+              "skipped, %u malformed, %u truncated, %u records without a plot, %u plots over a frame's capacity\n",
+              source.c_str(), c.feed.blocks, c.reader.records, c.reader.plots, c.feed.frames, c.feed.unknown_category,
+              c.feed.malformed, c.feed.truncated, c.reader.skipped_no_plot, c.reader.dropped_over_capacity);
+}
+
+nlohmann::json asterix_json(const AsterixReadCounts& c) {
+  return {{"cat048_blocks", c.feed.blocks},          {"records", c.reader.records},
+          {"plots", c.reader.plots},                 {"frames", c.feed.frames},
+          {"other_category_blocks", c.feed.unknown_category}, {"malformed", c.feed.malformed},
+          {"truncated", c.feed.truncated},           {"records_without_plot", c.reader.skipped_no_plot},
+          {"plots_over_capacity", c.reader.dropped_over_capacity}};
+}
+
 }  // namespace
 
 int cmd_replay(const ReplayOptions& o) {
-  if (o.stream.empty() == o.csv.empty()) throw std::invalid_argument("give exactly one of --stream and --csv");
+  if (int{!o.stream.empty()} + int{!o.csv.empty()} + int{!o.asterix.empty()} != 1) {
+    throw std::invalid_argument("give exactly one of --stream, --csv and --asterix");
+  }
   const FilterEntry& filter = find_filter(o.filter.filter);
 
   std::vector<std::uint8_t> bytes;
   std::vector<MeasurementFrame> frames;
   std::string source;
   std::size_t skipped = 0;  // stream frames that did not decode
-  if (!o.csv.empty()) {
+  StreamFormat format = StreamFormat::kWire;
+  std::optional<AsterixReadCounts> asterix_counts;
+  if (!o.asterix.empty()) {
+    source = o.asterix;
+    format = StreamFormat::kAsterixCat048;
+    bytes = read_file_bytes(o.asterix);
+    AsterixReadCounts counts;
+    frames = decode_cat048_stream(bytes, skipped, counts);
+    asterix_counts = counts;
+    if (!bytes.empty()) print_asterix_counts(source, counts);
+    if (!bytes.empty() && counts.reader.plots == 0) {
+      // Not a recording with nothing in it: a file that is not CAT048 at
+      // all (a wire stream, another category, garbage) must not pass as a run.
+      char first[8];
+      std::snprintf(first, sizeof first, "0x%02X", bytes.front());
+      throw std::runtime_error(source + ": no CAT048 plot in " + std::to_string(bytes.size()) +
+                               " bytes: not an ASTERIX CAT048 recording? (first byte " + first +
+                               ", CAT048 blocks start with 0x30; " + std::to_string(counts.feed.unknown_category) +
+                               " blocks of other categories, " + std::to_string(counts.feed.malformed) +
+                               " malformed, " + std::to_string(counts.feed.truncated) + " truncated)");
+    }
+  } else if (!o.csv.empty()) {
     source = o.csv;
     const std::vector<MeasurementFrame> plots = read_radar_plot_csv(std::filesystem::path(o.csv));
     bytes = encode_stream(plots);
@@ -93,7 +133,12 @@ int cmd_replay(const ReplayOptions& o) {
   ScoringConfig scoring;
   scoring.first_scored_step = o.first_scored_step;
   const double period_s = median_frame_period_s(frames);
-  RunDetail d = evaluate_stream(bytes, frames, truth, filter, options, budget_ns, scoring, period_s,
+  StreamInput input(std::move(bytes), format);
+  if (!o.asterix_out.path.empty()) {
+    input.cat062 = hal::asterix::Cat062Source{static_cast<std::uint8_t>(o.asterix_out.sac),
+                                              static_cast<std::uint8_t>(o.asterix_out.sic), false, 0};
+  }
+  RunDetail d = evaluate_stream(std::move(input), frames, truth, filter, options, budget_ns, scoring, period_s,
                                 o.loss_threshold_m);
 
   const std::filesystem::path dir(o.out);
@@ -113,9 +158,17 @@ int cmd_replay(const ReplayOptions& o) {
   nlohmann::json entry = summary_entry(context, row.summary);
   entry["source"] = source;
   entry["truth"] = o.truth;
+  if (asterix_counts.has_value()) entry["asterix"] = asterix_json(*asterix_counts);
+  if (!o.asterix_out.path.empty()) {
+    write_bytes(o.asterix_out.path, d.stream.cat062);
+    entry["asterix_out"] = {{"path", o.asterix_out.path},
+                            {"bytes", d.stream.cat062.size()},
+                            {"reports_not_written", d.stream.cat062_refused}};
+  }
   merge_summary_file(dir / "summary.json", context.scenario, context.filter, entry);
 
   print_status_counts(d.stream.stats);
+  if (!o.asterix_out.path.empty()) print_cat062_written(o.asterix_out.path, d.stream);
   if (!truth.empty()) {
     write_step_csv(names.steps_csv, d.steps, d.frames, o.loss_threshold_m);
     std::printf("scored %zu frames against %s (T = %g s, L = %g m)\n", d.steps.size(), o.truth.c_str(), period_s,

@@ -10,6 +10,7 @@
 #include "report/run_files.hpp"
 #include "report/summary_json.hpp"
 #include "scenarios/registry.hpp"
+#include "stream/stream_writer.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -41,7 +42,26 @@ int cmd_run(const RunOptions& o) {
   print_table_header(stdout);
   print_table_row(stdout, report.row);
   print_files(dir, report.row.filter, o.plots);
+  if (!o.asterix_out.path.empty()) {
+    // Run 0 again, its reports through a Cat062Sink as well: the run is
+    // deterministic, so these are the reports of the track CSV above.
+    const auto s = make_scenario(scenario);
+    const RunDetail d = run_scenario_once(
+        *s, o.seed, find_filter(o.filter.filter), config.options, config.budget_ns, config.scoring,
+        hal::asterix::Cat062Source{static_cast<std::uint8_t>(o.asterix_out.sac),
+                                   static_cast<std::uint8_t>(o.asterix_out.sic), false, 0});
+    write_bytes(o.asterix_out.path, d.stream.cat062);
+    print_cat062_written(o.asterix_out.path, d.stream);
+  }
   return 0;
+}
+
+void print_cat062_written(const std::string& path, const StreamRunResult& r) {
+  std::size_t reports = 0;
+  for (const FrameOutcome& f : r.frames) reports += f.tracks.size();
+  std::printf("wrote %s: %zu bytes, CAT062, one data block per track report (%zu reports, %u not written: "
+              "outside what CAT062 carries)\n",
+              path.c_str(), r.cat062.size(), reports, r.cat062_refused);
 }
 
 int cmd_suite(const SuiteOptions& o) {

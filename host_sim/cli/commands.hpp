@@ -28,6 +28,16 @@ struct GenerateOptions {
   std::string scenario;
   std::uint64_t seed = 0;
   std::string out;  ///< Stream file; FILE.truth.csv and FILE.plots.csv beside it.
+  bool asterix = false;     ///< --asterix: also FILE.ast, the plots as CAT048 data blocks.
+  unsigned asterix_sac = 0; ///< --sac: I048/010 SAC of those blocks (SIC = the plot's sensor_id).
+};
+
+/// --asterix-out of `run` and `replay`: every published report also as a
+/// CAT062 data block (one record per block) in this file.
+struct Cat062Output {
+  std::string path;   ///< Empty: not written.
+  unsigned sac = 0;   ///< I062/010 SAC.
+  unsigned sic = 1;   ///< I062/010 SIC.
 };
 int cmd_generate(const GenerateOptions& o);
 
@@ -39,8 +49,12 @@ struct RunOptions {
   unsigned jobs = 1;
   std::string out;          ///< Default results/<scenario>.
   bool plots = true;
+  Cat062Output asterix_out; ///< CAT062 of run 0's reports (the run of the track CSV).
 };
 int cmd_run(const RunOptions& o);
+
+/// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).
+void print_cat062_written(const std::string& path, const StreamRunResult& r);
 
 struct SuiteOptions {
   std::vector<std::string> scenarios{"s1", "s2"};
@@ -57,13 +71,15 @@ int cmd_suite(const SuiteOptions& o);
 
 struct ReplayOptions {
   std::string stream;       ///< Wire stream file, or
-  std::string csv;          ///< radar plot CSV.
+  std::string csv;          ///< radar plot CSV, or
+  std::string asterix;      ///< ASTERIX CAT048 data blocks back to back (.ast).
   std::string truth;        ///< Optional truth CSV: enables scoring.
   FilterChoice filter;
   double loss_threshold_m = 300.0;
   std::size_t first_scored_step = 2;
   std::string out = "results/replay";
   bool plots = true;
+  Cat062Output asterix_out;
 };
 /// Exit status of `replay` when its input held no frames (a 0-byte stream,
 /// a stream of which no frame decodes, a CSV with only its header): a

@@ -32,6 +32,13 @@ void add_filter_options(CLI::App* cmd, FilterChoice& f) {
   cmd->add_option("--budget-us", f.budget_us, "Step budget for overrun counting, us")->capture_default_str();
 }
 
+// --asterix-out and its SAC/SIC (docs/asterix.md, "kestrel-sim and ASTERIX").
+void add_cat062_output(CLI::App* cmd, Cat062Output& o) {
+  cmd->add_option("--asterix-out", o.path, "Also write every published track report as a CAT062 data block to FILE");
+  cmd->add_option("--sac", o.sac, "I062/010 SAC of --asterix-out")->check(CLI::Range(0, 255))->capture_default_str();
+  cmd->add_option("--sic", o.sic, "I062/010 SIC of --asterix-out")->check(CLI::Range(0, 255))->capture_default_str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,6 +53,11 @@ int main(int argc, char** argv) {
   generate->add_option("--seed", gen.seed, "Noise seed")->capture_default_str();
   generate->add_option("--out,-o", gen.out, "Stream file; FILE.truth.csv and FILE.plots.csv are written beside it")
       ->required();
+  generate->add_flag("--asterix", gen.asterix,
+                     "Also write the plots as ASTERIX CAT048 data blocks to FILE.ast (FILE without its extension)");
+  generate->add_option("--sac", gen.asterix_sac, "I048/010 SAC of the CAT048 blocks (SIC = the plot's sensor_id)")
+      ->check(CLI::Range(0, 255))
+      ->capture_default_str();
 
   RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo runs of one scenario with one filter");
@@ -56,6 +68,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--jobs,-j", run.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
   run_cmd->add_option("--out,-o", run.out, "Output directory (default results/<scenario>)");
   run_cmd->add_flag("!--no-plots", run.plots, "Do not run the plot script");
+  add_cat062_output(run_cmd, run.asterix_out);
 
   SuiteOptions suite;
   CLI::App* suite_cmd = app.add_subcommand("suite", "The default suite: S1 and S2 with EKF-CA; combined summary");
@@ -73,8 +86,11 @@ int main(int argc, char** argv) {
   CLI::App* replay_cmd = app.add_subcommand("replay", "Run a filter over a recorded stream file or plot CSV");
   auto* stream_opt = replay_cmd->add_option("--stream", replay.stream, "Wire stream file");
   auto* csv_opt = replay_cmd->add_option("--csv", replay.csv, "Radar plot CSV (time_s,range_m,bearing_rad,...)");
+  auto* asterix_opt =
+      replay_cmd->add_option("--asterix", replay.asterix, "ASTERIX CAT048 data blocks back to back (.ast)");
   stream_opt->excludes(csv_opt);
   csv_opt->excludes(stream_opt);
+  asterix_opt->excludes(stream_opt)->excludes(csv_opt);
   replay_cmd->add_option("--truth", replay.truth, "Truth CSV (time_s,x_m,y_m,...): score the run");
   add_filter_options(replay_cmd, replay.filter);
   replay_cmd->add_option("--loss-threshold-m", replay.loss_threshold_m, "L of the track-loss metric, m")
@@ -83,6 +99,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   replay_cmd->add_option("--out,-o", replay.out, "Output directory")->capture_default_str();
   replay_cmd->add_flag("!--no-plots", replay.plots, "Do not run the plot script");
+  add_cat062_output(replay_cmd, replay.asterix_out);
 
   TimingOptions timing;
   CLI::App* timing_cmd = app.add_subcommand("timing", "Per-step latency of the real-time loop");

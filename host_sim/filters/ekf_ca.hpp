@@ -22,8 +22,8 @@ host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& 
 
 FilterSetup ekf_ca_setup(const FilterOptions& options);
 FilterSetup ekf_ca_f32_setup(const FilterOptions& options);
-StreamRunResult run_ekf_ca(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns);
-StreamRunResult run_ekf_ca_f32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns);
+StreamRunResult run_ekf_ca_f32(StreamInput stream, const FilterOptions& options,
                                std::uint64_t budget_ns);
 
 }  // namespace kestrel::sim

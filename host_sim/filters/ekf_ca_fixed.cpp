@@ -35,7 +35,7 @@ host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& option
 }
 
 template <class Q>
-StreamRunResult run_typed(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns) {
+StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
   using Tracker = host::BoardRadarTracker<EkfCa<Q>>;
   auto tracker = std::make_unique<Tracker>(make_fixed_tracker<Q>(options));
   return run_stream(*tracker, std::move(stream), budget_ns);
@@ -65,12 +65,12 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
 FilterSetup ekf_ca_q31_32_setup(const FilterOptions& options) { return setup_with(options, "Q31.32"); }
 FilterSetup ekf_ca_q23_40_setup(const FilterOptions& options) { return setup_with(options, "Q23.40"); }
 
-StreamRunResult run_ekf_ca_q31_32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_q31_32(StreamInput stream, const FilterOptions& options,
                                   std::uint64_t budget_ns) {
   return run_typed<Q31_32>(std::move(stream), options, budget_ns);
 }
 
-StreamRunResult run_ekf_ca_q23_40(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_q23_40(StreamInput stream, const FilterOptions& options,
                                   std::uint64_t budget_ns) {
   return run_typed<Q23_40>(std::move(stream), options, budget_ns);
 }

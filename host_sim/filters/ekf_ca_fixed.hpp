@@ -16,9 +16,9 @@ namespace kestrel::sim {
 
 FilterSetup ekf_ca_q31_32_setup(const FilterOptions& options);
 FilterSetup ekf_ca_q23_40_setup(const FilterOptions& options);
-StreamRunResult run_ekf_ca_q31_32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_q31_32(StreamInput stream, const FilterOptions& options,
                                   std::uint64_t budget_ns);
-StreamRunResult run_ekf_ca_q23_40(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_q23_40(StreamInput stream, const FilterOptions& options,
                                   std::uint64_t budget_ns);
 
 }  // namespace kestrel::sim

@@ -41,8 +41,9 @@ struct FilterEntry {
   hal::FrameKind kind;           ///< Frames it consumes.
   /// Parameters the options resolve to.
   FilterSetup (*setup)(const FilterOptions& options);
-  /// Build a fresh tracker and run it over `stream`.
-  StreamRunResult (*run)(std::vector<std::uint8_t> stream, const FilterOptions& options,
+  /// Build a fresh tracker and run it over `stream` (a wire stream, or a
+  /// CAT048 recording; optionally also writing CAT062: StreamInput).
+  StreamRunResult (*run)(StreamInput stream, const FilterOptions& options,
                          std::uint64_t budget_ns);
 };
 

@@ -80,7 +80,7 @@ R2AekfCa<Scalar> make_filter(const FilterOptions& options, const R2AekfConfig<Sc
 }
 
 template <class Scalar>
-StreamRunResult run_with(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_with(StreamInput stream, const FilterOptions& options,
                          const R2AekfConfig<Scalar>& config, std::uint64_t budget_ns) {
   using Tracker = host::BoardRadarTracker<R2AekfCa<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
@@ -130,7 +130,7 @@ class LoggingR2Aekf : public R2AekfCa<double> {
 
 R2AekfConfig<double> g_study_config{};
 
-StreamRunResult run_study(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns) {
+StreamRunResult run_study(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
   return run_with<double>(std::move(stream), options, g_study_config, budget_ns);
 }
 
@@ -198,14 +198,14 @@ FilterSetup r2aekf_f32_setup(const FilterOptions& options) {
   return r2aekf_setup_for(options, R2AekfConfig<double>{}, "R2-AEKF default mode (float)");
 }
 
-StreamRunResult run_r2aekf(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns) {
+StreamRunResult run_r2aekf(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
   return run_with<double>(std::move(stream), options, R2AekfConfig<double>{}, budget_ns);
 }
-StreamRunResult run_r2aekf_paper(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_r2aekf_paper(StreamInput stream, const FilterOptions& options,
                                  std::uint64_t budget_ns) {
   return run_with<double>(std::move(stream), options, R2AekfConfig<double>::paper(), budget_ns);
 }
-StreamRunResult run_r2aekf_f32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_r2aekf_f32(StreamInput stream, const FilterOptions& options,
                                std::uint64_t budget_ns) {
   return run_with<float>(std::move(stream), options, R2AekfConfig<float>{}, budget_ns);
 }

@@ -33,10 +33,10 @@ host::BoardRadarTracker<R2AekfCa<Scalar>> make_r2aekf_tracker(const FilterOption
 FilterSetup r2aekf_setup(const FilterOptions& options);
 FilterSetup r2aekf_paper_setup(const FilterOptions& options);
 FilterSetup r2aekf_f32_setup(const FilterOptions& options);
-StreamRunResult run_r2aekf(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns);
-StreamRunResult run_r2aekf_paper(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_r2aekf(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns);
+StreamRunResult run_r2aekf_paper(StreamInput stream, const FilterOptions& options,
                                  std::uint64_t budget_ns);
-StreamRunResult run_r2aekf_f32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_r2aekf_f32(StreamInput stream, const FilterOptions& options,
                                std::uint64_t budget_ns);
 
 /// Parameters of a config, by name (summary.json, study tables).

@@ -15,7 +15,7 @@ RunMetrics metrics_of(const std::vector<ScoredStep>& steps, double period_s, dou
   return compute_run_metrics(errors, period_s, loss_threshold_m);
 }
 
-RunDetail evaluate_stream(std::vector<std::uint8_t> stream, std::vector<MeasurementFrame> frames,
+RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> frames,
                           std::vector<TruthSample> truth, const FilterEntry& filter, const FilterOptions& options,
                           std::uint64_t budget_ns, const ScoringConfig& scoring, double period_s,
                           double loss_threshold_m) {
@@ -29,7 +29,8 @@ RunDetail evaluate_stream(std::vector<std::uint8_t> stream, std::vector<Measurem
 }
 
 RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const FilterEntry& filter,
-                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring) {
+                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring,
+                            std::optional<hal::asterix::Cat062Source> cat062) {
   ScenarioRun generated = scenario.generate(seed);
   std::vector<std::uint8_t> bytes = encode_stream(generated.frames);
   // Keep the frames as the wire carries them, so the per-step CSV shows
@@ -38,7 +39,9 @@ RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const 
   wire_frames.reserve(generated.frames.size());
   for (const MeasurementFrame& f : generated.frames) wire_frames.push_back(from_wire_frame(to_wire_frame(f)));
   const ScenarioInfo& info = scenario.info();
-  RunDetail d = evaluate_stream(std::move(bytes), std::move(wire_frames), std::move(generated.truth), filter,
+  StreamInput input(std::move(bytes));
+  input.cat062 = cat062;
+  RunDetail d = evaluate_stream(std::move(input), std::move(wire_frames), std::move(generated.truth), filter,
                                 options, budget_ns, scoring, info.frame_period_s, info.loss_threshold_m);
   d.seed = seed;
   return d;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "filters/filter_registry.hpp"
@@ -24,17 +25,21 @@ struct RunDetail {
   RunMetrics metrics;
 };
 
-/// Run `filter` over `stream` and score it.
+/// Run `filter` over `stream` (a wire stream or a CAT048 recording, which
+/// may also ask for CAT062 output) and score it.
 /// @param frames the SI view of the stream (for the per-step CSV).
 /// @param period_s T for the loss time; @param loss_threshold_m L.
-RunDetail evaluate_stream(std::vector<std::uint8_t> stream, std::vector<MeasurementFrame> frames,
+RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> frames,
                           std::vector<TruthSample> truth, const FilterEntry& filter, const FilterOptions& options,
                           std::uint64_t budget_ns, const ScoringConfig& scoring, double period_s,
                           double loss_threshold_m);
 
 /// Generate the scenario with `seed`, encode it, run and score it.
+/// @param cat062 when set, the run also writes its reports as CAT062
+///        (RunDetail::stream.cat062) with this source.
 RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const FilterEntry& filter,
-                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring);
+                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring,
+                            std::optional<hal::asterix::Cat062Source> cat062 = std::nullopt);
 
 /// Run metrics of scored steps.
 RunMetrics metrics_of(const std::vector<ScoredStep>& steps, double period_s, double loss_threshold_m);

@@ -1,18 +1,23 @@
 // SPDX-License-Identifier: Apache-2.0
 // One run of a tracker over a byte stream, driven exactly as a board drives
-// it: host::StreamFileFeed -> hal::RadarAdapter -> Tracker::step ->
-// host::MemorySink, inside hal::Runner and timed by host::SteadyClock
-// (targets/host/board.hpp). Everything the loop touches is sized in the
-// constructor, so run_to_end() makes no allocation (tests assert it), and
-// the frame bookkeeping is kept as plain records until result() flattens it.
+// it: host::StreamFileFeed (or host::AsterixFileFeed for a CAT048
+// recording) -> hal::RadarAdapter -> Tracker::step -> host::MemorySink
+// (and, when asked, hal::asterix::Cat062Sink), inside hal::Runner and timed
+// by host::SteadyClock (targets/host/board.hpp). Everything the loop touches
+// is sized in the constructor, so run_to_end() makes no allocation (tests
+// assert it), and the frame bookkeeping is kept as plain records until
+// result() flattens it.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "kestrel/hal/asterix_cat062_sink.hpp"
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/host/board.hpp"
 #include "kestrel/host/track_row.hpp"
@@ -20,19 +25,69 @@
 
 namespace kestrel::sim {
 
-template <class Tracker>
+/// A hal::asterix::ByteTx into a buffer whose capacity is fixed when it is
+/// built: write() never allocates, and refuses (kTableFull) what would not fit.
+class BoundedByteTx {
+ public:
+  explicit BoundedByteTx(std::size_t capacity) { bytes_.reserve(capacity); }
+  [[nodiscard]] Status write(std::span<const std::uint8_t> b) {
+    if (bytes_.capacity() - bytes_.size() < b.size()) return Status::kTableFull;
+    bytes_.insert(bytes_.end(), b.begin(), b.end());
+    return Status::kOk;
+  }
+  const std::vector<std::uint8_t>& bytes() const { return bytes_; }
+
+ private:
+  std::vector<std::uint8_t> bytes_;
+};
+
+/// The sink of a kestrel-sim run: every report into memory for scoring and,
+/// when a CAT062 source is given, also through a Cat062Sink. Its status is
+/// the memory sink's: a report CAT062 cannot carry is counted by the
+/// Cat062Sink, not refused to the Runner, so scoring sees every report.
+template <class Report>
+class ReplaySink {
+ public:
+  using Cat062 = hal::asterix::Cat062Sink<BoundedByteTx>;
+
+  ReplaySink(std::size_t capacity, std::optional<hal::asterix::Cat062Source> cat062)
+      : memory_(capacity),
+        cat062_(BoundedByteTx(cat062.has_value() ? capacity * Cat062::kMaxBlockBytes : 0),
+                cat062.value_or(hal::asterix::Cat062Source{})),
+        cat062_on_(cat062.has_value()) {}
+
+  [[nodiscard]] Status publish(const Report& report) {
+    const Status s = memory_.publish(report);
+    if (cat062_on_) (void)cat062_.publish(report);  // counted in cat062().counters()
+    return s;
+  }
+
+  std::span<const Report> reports() const { return memory_.reports(); }
+  std::size_t size() const { return memory_.size(); }
+  const Cat062& cat062() const { return cat062_; }
+
+ private:
+  host::MemorySink<Report> memory_;
+  Cat062 cat062_;
+  bool cat062_on_;
+};
+
+template <class Tracker, class Feed = host::StreamFileFeed>
 class StreamRun {
  public:
   using Report = typename Tracker::Report;
-  using Sink = host::MemorySink<Report>;
-  using Runner = host::BoardRunner<Tracker, Sink>;
+  using Sink = ReplaySink<Report>;
+  using Runner = host::BoardRunnerOver<Feed, Tracker, Sink>;
 
-  /// @param stream wire frames back to back.
+  /// @param stream wire frames back to back (Feed = StreamFileFeed) or
+  ///        CAT048 data blocks back to back (Feed = AsterixFileFeed).
   /// @param budget_ns a step longer than this is an overrun.
-  StreamRun(Tracker& tracker, std::vector<std::uint8_t> stream, std::uint64_t budget_ns)
-      : feed_(std::move(stream)),
-        max_frames_(feed_.size_bytes() / kSmallestFrameBytes + 1),
-        sink_(max_frames_ * Tracker::Table::kMaxTracks),
+  /// @param cat062 when set, also write every report as CAT062 with this source.
+  StreamRun(Tracker& tracker, std::vector<std::uint8_t> stream, std::uint64_t budget_ns,
+            std::optional<hal::asterix::Cat062Source> cat062 = std::nullopt)
+      : max_frames_(max_frames_of(stream)),
+        feed_(std::move(stream)),
+        sink_(max_frames_ * Tracker::Table::kMaxTracks, cat062),
         runner_(feed_, clock_, tracker, hal::RadarAdapter{}, sink_, budget_ns) {
     records_.reserve(max_frames_);
   }
@@ -61,6 +116,9 @@ class StreamRun {
   StreamRunResult result() const {
     StreamRunResult out;
     out.stats = runner_.stats();
+    out.cat062 = sink_.cat062().tx().bytes();
+    out.cat062_refused = sink_.cat062().counters().refused + sink_.cat062().counters().tx_dropped;
+    if constexpr (std::is_same_v<Feed, host::AsterixFileFeed>) out.asterix = feed_.counters();
     out.frames.reserve(records_.size());
     const std::span<const Report> reports = sink_.reports();
     for (const FrameRecord& r : records_) {
@@ -80,6 +138,22 @@ class StreamRun {
 
  private:
   static constexpr std::size_t kSmallestFrameBytes = hal::wire::frame_size(hal::FrameKind::kRadar, 0);
+
+  // Polls that can return something other than kNoData: for a wire stream
+  // one per smallest frame; for a CAT048 recording counted by a dry run of
+  // the same feed (a record can be 10 bytes, so a bound from the size
+  // alone would reserve far more than a long recording needs).
+  static std::size_t max_frames_of(const std::vector<std::uint8_t>& stream) {
+    if constexpr (std::is_same_v<Feed, host::AsterixFileFeed>) {
+      host::AsterixFileFeed dry(stream);
+      hal::Frame frame{};
+      std::size_t n = 0;
+      while (dry.poll(frame) != Status::kNoData) ++n;
+      return n + 1;
+    } else {
+      return stream.size() / kSmallestFrameBytes + 1;
+    }
+  }
 
   struct FrameRecord {
     Status status = Status::kOk;
@@ -105,18 +179,23 @@ class StreamRun {
     }
   }
 
-  host::StreamFileFeed feed_;
-  host::SteadyClock clock_;
   std::size_t max_frames_;
+  Feed feed_;
+  host::SteadyClock clock_;
   Sink sink_;
   Runner runner_;
   std::vector<FrameRecord> records_;
 };
 
-/// Build, run and flatten in one call.
+/// Build, run and flatten in one call, with the feed `input.format` names.
 template <class Tracker>
-StreamRunResult run_stream(Tracker& tracker, std::vector<std::uint8_t> stream, std::uint64_t budget_ns) {
-  StreamRun<Tracker> run(tracker, std::move(stream), budget_ns);
+StreamRunResult run_stream(Tracker& tracker, StreamInput input, std::uint64_t budget_ns) {
+  if (input.format == StreamFormat::kAsterixCat048) {
+    StreamRun<Tracker, host::AsterixFileFeed> run(tracker, std::move(input.bytes), budget_ns, input.cat062);
+    run.run_to_end();
+    return run.result();
+  }
+  StreamRun<Tracker> run(tracker, std::move(input.bytes), budget_ns, input.cat062);
   run.run_to_end();
   return run.result();
 }

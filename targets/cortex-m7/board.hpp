@@ -7,7 +7,9 @@
 //
 //   MeasurementFeed -> UartRingFeed  (USART3 RX ring -> FrameAssembler)
 //   CycleClock      -> DwtCycleClock (DWT CYCCNT at the core clock, extended to 64 bits)
-//   TrackSink       -> UartTxSink    (KTRK v2 records -> USART3 TX ring)
+//   TrackSink       -> UartTxSink    (KTRK v2 records -> USART3 TX ring), or,
+//                      with KESTREL_BOARD_SINK_CAT062 (kestrel-m7-cat062.elf),
+//                      UartCat062Sink (one ASTERIX CAT062 block per report)
 //   Adapter/Tracker, by sensor kind (issue 15), in double (FPv5-D16 does
 //   double in hardware):
 //     radar (kestrel-m7.elf, the default)
@@ -41,7 +43,11 @@ namespace kestrel::m7 {
 
 using Feed = UartRingFeed;
 using Clock = board::DwtCycleClock;
+#if defined(KESTREL_BOARD_SINK_CAT062)
+using Sink = UartCat062Sink;
+#else
 using Sink = UartTxSink;
+#endif
 
 #if defined(KESTREL_BOARD_SENSOR_PCL)
 

@@ -43,6 +43,11 @@ inline constexpr std::size_t kTxRingBytes = 8192;
 #else
 inline constexpr std::size_t kTxRingBytes = 1024;
 #endif
+/// I062/010 data source of the CAT062 image (kestrel-m7-cat062.elf): the
+/// SAC and SIC a surveillance network assigns to this tracker.
+inline constexpr std::uint8_t kAsterixSac = 0;
+inline constexpr std::uint8_t kAsterixSic = 1;
+
 /// Frame assembler's linear buffer: the largest frame the decoder accepts.
 inline constexpr std::size_t kAssemblerBytes = hal::wire::kMaxFrameBytes;
 

@@ -6,6 +6,7 @@
 //
 //   StreamFileFeed::poll -> hal::RadarAdapter -> Tracker::step ->
 //   Sink::publish, timed by SteadyClock, all inside hal::Runner.
+// (AsterixFileFeed replaces StreamFileFeed for a CAT048 recording.)
 #pragma once
 
 #include <cstddef>
@@ -13,6 +14,7 @@
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/hal/radar_adapter.hpp"
 #include "kestrel/hal/runner.hpp"
+#include "kestrel/host/asterix_file_feed.hpp"
 #include "kestrel/host/csv_track_sink.hpp"
 #include "kestrel/host/memory_sink.hpp"
 #include "kestrel/host/steady_clock.hpp"
@@ -37,5 +39,9 @@ using BoardRadarTracker = RadarTracker<Filter, kMaxTracks, kMaxPlots>;
 /// The board loop for a tracker and a sink.
 template <class Tracker, class Sink>
 using BoardRunner = hal::Runner<Feed, Clock, Tracker, hal::RadarAdapter, Sink>;
+
+/// The same loop over another feed: AsterixFileFeed for a CAT048 recording.
+template <class OtherFeed, class Tracker, class Sink>
+using BoardRunnerOver = hal::Runner<OtherFeed, Clock, Tracker, hal::RadarAdapter, Sink>;
 
 }  // namespace kestrel::host
