@@ -161,17 +161,14 @@ SCENARIO("EKF-CA with range rate refuses range-bearing-only streams", "[host_sim
 SCENARIO("EKF-CA with range rate holds the S1rr and S2rr targets", "[host_sim][e2e][range_rate]") {
   for (const char* filter_name : {"ekf-ca-rr", "ekf-ca-rr-f32"}) {
     for (const char* name : {"s1rr", "s2rr"}) {
-      GIVEN(filter_name << " on 3 runs of " << name << " (seeds 0-2)") {
+      GIVEN(filter_name << " with qj 160 on 3 runs of " << name << " (seeds 0-2)") {
         const auto scenario = make_scenario(name);
         const FilterEntry& filter = find_filter(filter_name);
+        FilterOptions options;
+        options.qj = 160.0;  // the tuned EKF-CA of SPEC 12; at 1.6 the filter is inconsistent (docs/range_rate.md)
         std::vector<RunRecord> runs;
-        std::vector<RunRecord> baseline;  // ekf-ca on the same plots without range rate
-        const auto plain = make_scenario(std::string(name).substr(0, 2));
         for (std::uint64_t seed = 0; seed < 3; ++seed) {
-          runs.push_back(record_of(run_scenario_once(*scenario, seed, filter, FilterOptions{}, 1'000'000,
-                                                     ScoringConfig{})));
-          baseline.push_back(record_of(run_scenario_once(*plain, seed, find_filter("ekf-ca"), FilterOptions{},
-                                                         1'000'000, ScoringConfig{})));
+          runs.push_back(record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000, ScoringConfig{})));
         }
         THEN("every scored frame has one confirmed track, with one id, and every frame steps") {
           for (const RunRecord& r : runs) {
@@ -183,19 +180,15 @@ SCENARIO("EKF-CA with range rate holds the S1rr and S2rr targets", "[host_sim][e
             CHECK(r.track_switches == 0);
           }
         }
-        THEN("RMSE is under 200 m and below EKF-CA's on the same range and bearing noise") {
-          double rr_sum = 0.0;
-          double base_sum = 0.0;
-          for (std::size_t i = 0; i < runs.size(); ++i) {
-            INFO(name << " seed " << runs[i].seed << ": " << runs[i].metrics.rmse_m << " m with range rate, "
-                      << baseline[i].metrics.rmse_m << " m without");
-            CHECK(runs[i].metrics.rmse_m < 200.0);
-            rr_sum += runs[i].metrics.rmse_m;
-            base_sum += baseline[i].metrics.rmse_m;
+        THEN("RMSE is under 100 m and the 3-channel NIS is near its 3 degrees of freedom") {
+          for (const RunRecord& r : runs) {
+            INFO(name << " seed " << r.seed << ": RMSE " << r.metrics.rmse_m << " m, NIS " << r.metrics.nis);
+            // 200-run means (docs/range_rate.md): RMSE 54 / 59 m, NIS 3.3 / 2.4
+            // on s1rr / s2rr; a range rate read in mm/s or a bearing in
+            // degrees sends them far past these bounds.
+            CHECK(r.metrics.rmse_m < 100.0);
+            CHECK(r.metrics.nis < 6.0);
           }
-          // docs/range_rate.md: the 200-run mean gain is far larger than
-          // the 3-run spread, so the 3-run mean must show it.
-          CHECK(rr_sum < base_sum);
         }
       }
     }
