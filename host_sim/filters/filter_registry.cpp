@@ -6,6 +6,7 @@
 
 #include "filters/ekf_ca.hpp"
 #include "filters/ekf_ca_fixed.hpp"
+#include "filters/ekf_ca_rr.hpp"
 #include "filters/r2aekf_filters.hpp"
 
 namespace kestrel::sim {
@@ -21,6 +22,10 @@ const FilterEntry kFilters[] = {
      &ekf_ca_q31_32_setup, &run_ekf_ca_q31_32},
     {"ekf-ca-q23_40", "the same EKF-CA in Q23.40 fixed point", hal::FrameKind::kRadar, &ekf_ca_q23_40_setup,
      &run_ekf_ca_q23_40},
+    {"ekf-ca-rr", "EKF-CA with the plots' range rate (srr 0.5 m/s); double; needs range-rate plots (s1rr, s2rr)",
+     hal::FrameKind::kRadar, &ekf_ca_rr_setup, &run_ekf_ca_rr},
+    {"ekf-ca-rr-f32", "the same EKF-CA with range rate in float", hal::FrameKind::kRadar, &ekf_ca_rr_f32_setup,
+     &run_ekf_ca_rr_f32},
     {"r2aekf", "R2-AEKF default mode (SPEC 5 corrections) on EKF-CA; double", hal::FrameKind::kRadar, &r2aekf_setup,
      &run_r2aekf},
     {"r2aekf-paper", "R2-AEKF paper mode (paper 000 eqs. 7-18 as printed); double", hal::FrameKind::kRadar,

@@ -46,11 +46,21 @@ RadarNoise paper000_varying_radar_noise() {
   return n;
 }
 
+RadarNoise paper000_range_rate_radar_noise() {
+  RadarNoise n = paper000_radar_noise();
+  n.sigma_range_rate_mps = kRangeRateSigmaMps;
+  return n;
+}
+
 RadarScenario::RadarScenario(ScenarioInfo info, std::vector<TruthSample> truth, RadarNoise noise)
     : info_(std::move(info)), truth_(std::move(truth)), noise_(std::move(noise)) {}
 
 ScenarioRun RadarScenario::generate(std::uint64_t seed) const {
   Rng rng(seed);
+  // Range-rate noise from a stream of its own, so that range and bearing
+  // noise are the same bits as in the variant without range rate (s1 and
+  // s1rr with one seed differ only by the range rate: paired comparisons).
+  Rng rate_rng(seed ^ 0x5261'6E67'6552'6174ULL);  // "RangeRat"
   ScenarioRun run;
   run.truth = truth_;
   run.frames.reserve(truth_.size());
@@ -63,6 +73,10 @@ ScenarioRun RadarScenario::generate(std::uint64_t seed) const {
     RadarPlotSi plot;
     plot.range_m = std::hypot(s.x_m, s.y_m) + noise_.range_sigma_at(s.t_s) * n_range;
     plot.bearing_rad = wrap_pi(std::atan2(s.y_m, s.x_m) + noise_.bearing_sigma_at(s.t_s) * n_bearing);
+    if (noise_.sigma_range_rate_mps.has_value()) {
+      const double r = std::hypot(s.x_m, s.y_m);
+      plot.range_rate_mps = (s.x_m * s.vx_mps + s.y_m * s.vy_mps) / r + *noise_.sigma_range_rate_mps * rate_rng.normal();
+    }
     MeasurementFrame frame;
     frame.t_s = s.t_s;
     frame.kind = hal::FrameKind::kRadar;

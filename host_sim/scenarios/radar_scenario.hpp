@@ -2,10 +2,13 @@
 // A single target seen by the polar radar at the origin (SPEC section 4,
 // scenarios S1, S2, S1n, S2n): a truth trajectory sampled at the frame
 // times, plus range and bearing noise whose sigma may change over time
-// (the "n" variants). Each frame holds exactly one plot (Pd = 1, no clutter).
+// (the "n" variants), and optionally a range rate (x vx + y vy)/r with its
+// own noise (the "rr" variants, docs/range_rate.md). Each frame holds
+// exactly one plot (Pd = 1, no clutter).
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "scenarios/scenario.hpp"
@@ -25,6 +28,9 @@ struct RadarNoise {
   double sigma_range_m = 3.0;                   ///< sr outside any window, m.
   double sigma_bearing_rad = 0.0;               ///< sb outside any window, rad.
   std::vector<NoiseWindow> windows;             ///< Where the sigmas are scaled.
+  /// Range-rate noise sigma, m/s (not scaled by the windows). Unset: the
+  /// plots carry no range rate.
+  std::optional<double> sigma_range_rate_mps;
 
   /// Range sigma at time t, m.
   double range_sigma_at(double t_s) const;
@@ -37,6 +43,12 @@ RadarNoise paper000_radar_noise();
 /// The S1n/S2n sensor: range sigma x3 for 60 <= t < 75 s, bearing sigma x3
 /// for 110 <= t < 120 s (the filters are not told).
 RadarNoise paper000_varying_radar_noise();
+/// The S1rr/S2rr sensor: the S1/S2 sensor plus a range rate with sigma
+/// kRangeRateSigmaMps (SPEC fixes none; docs/range_rate.md).
+RadarNoise paper000_range_rate_radar_noise();
+/// srr of the rr variants, m/s: a pulse-Doppler radar's typical radial
+/// velocity accuracy (docs/range_rate.md).
+inline constexpr double kRangeRateSigmaMps = 0.5;
 
 class RadarScenario final : public Scenario {
  public:

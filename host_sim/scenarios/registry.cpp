@@ -17,6 +17,8 @@ const ScenarioEntry kScenarios[] = {
     {"s2", &make_s2},
     {"s1n", &make_s1n},
     {"s2n", &make_s2n},
+    {"s1rr", &make_s1rr},
+    {"s2rr", &make_s2rr},
 };
 }  // namespace
 

@@ -77,3 +77,13 @@ std::unique_ptr<Scenario> make_s1n() {
 }
 
 }  // namespace kestrel::sim
+
+namespace kestrel::sim {
+
+std::unique_ptr<Scenario> make_s1rr() {
+  return std::make_unique<RadarScenario>(
+      s1_info("s1rr", "S1 with a range rate on every plot (sigma 0.5 m/s); range/bearing noise as S1"),
+      s1_trajectory(), paper000_range_rate_radar_noise());
+}
+
+}  // namespace kestrel::sim

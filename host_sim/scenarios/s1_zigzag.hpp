@@ -17,5 +17,8 @@ TruthSample s1_truth(double t_s);
 
 std::unique_ptr<Scenario> make_s1();
 std::unique_ptr<Scenario> make_s1n();
+/// S1 with a range rate on every plot (sigma kRangeRateSigmaMps); range and
+/// bearing noise equal to S1 seed for seed.
+std::unique_ptr<Scenario> make_s1rr();
 
 }  // namespace kestrel::sim

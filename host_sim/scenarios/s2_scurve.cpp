@@ -119,3 +119,13 @@ std::unique_ptr<Scenario> make_s2n() {
 }
 
 }  // namespace kestrel::sim
+
+namespace kestrel::sim {
+
+std::unique_ptr<Scenario> make_s2rr() {
+  return std::make_unique<RadarScenario>(
+      s2_info("s2rr", "S2 with a range rate on every plot (sigma 0.5 m/s); range/bearing noise as S2"),
+      s2_trajectory(kPeriodS, kSteps), paper000_range_rate_radar_noise());
+}
+
+}  // namespace kestrel::sim

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // S2, S-curve with slow-and-go and jerk bursts (SPEC section 9, paper 000),
-// and S2n, the same with time-varying noise. Truth is integrated at 1 ms in
+// S2n, the same with time-varying noise, and S2rr, with range rate. Truth is integrated at 1 ms in
 // position, heading and speed:
 //  - start (-8000, 12000) m, heading +x, 180 m/s;
 //  - turns of radius 1500 m (rate = speed / 1500): a left turn of 90 deg
@@ -27,5 +27,8 @@ double s2_along_track_accel(double t_s);
 
 std::unique_ptr<Scenario> make_s2();
 std::unique_ptr<Scenario> make_s2n();
+/// S2 with a range rate on every plot (sigma kRangeRateSigmaMps); range and
+/// bearing noise equal to S2 seed for seed.
+std::unique_ptr<Scenario> make_s2rr();
 
 }  // namespace kestrel::sim
