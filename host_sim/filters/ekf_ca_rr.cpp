@@ -14,7 +14,7 @@ namespace kestrel::sim {
 namespace {
 
 template <class Scalar>
-StreamRunResult run_typed(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns) {
+StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
   using Tracker = host::BoardRadarTracker<EkfCaRr<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(make_ekf_ca_rr_tracker<Scalar>(options));
@@ -73,12 +73,12 @@ RadarRangeRateTrackerParams ekf_ca_rr_params(const FilterOptions& options) {
 FilterSetup ekf_ca_rr_setup(const FilterOptions& options) { return setup_with(options, "double"); }
 FilterSetup ekf_ca_rr_f32_setup(const FilterOptions& options) { return setup_with(options, "float"); }
 
-StreamRunResult run_ekf_ca_rr(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_rr(StreamInput stream, const FilterOptions& options,
                               std::uint64_t budget_ns) {
   return run_typed<double>(std::move(stream), options, budget_ns);
 }
 
-StreamRunResult run_ekf_ca_rr_f32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_rr_f32(StreamInput stream, const FilterOptions& options,
                                   std::uint64_t budget_ns) {
   return run_typed<float>(std::move(stream), options, budget_ns);
 }

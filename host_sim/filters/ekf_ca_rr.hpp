@@ -24,8 +24,8 @@ host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOpti
 
 FilterSetup ekf_ca_rr_setup(const FilterOptions& options);
 FilterSetup ekf_ca_rr_f32_setup(const FilterOptions& options);
-StreamRunResult run_ekf_ca_rr(std::vector<std::uint8_t> stream, const FilterOptions& options, std::uint64_t budget_ns);
-StreamRunResult run_ekf_ca_rr_f32(std::vector<std::uint8_t> stream, const FilterOptions& options,
+StreamRunResult run_ekf_ca_rr(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns);
+StreamRunResult run_ekf_ca_rr_f32(StreamInput stream, const FilterOptions& options,
                                   std::uint64_t budget_ns);
 
 }  // namespace kestrel::sim
