@@ -7,6 +7,7 @@
 // resync rule's first resync_frames - 1 frames).
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "filters/filter_registry.hpp"
@@ -87,11 +88,19 @@ SCENARIO("every radar filter keeps P positive definite across dropouts from one 
   const double gaps_s[] = {0.5, 1.0, 2.5, 5.0, 10.0, 30.0, 60.0, 300.0, 599.0, 3600.0};
   for (const char* scenario : {"s1", "s2", "s1n", "s2n"}) {
     const auto frames = make_scenario(scenario)->generate(1).frames;
+    // A range-rate filter runs on the scenario's range-rate twin (s1rr,
+    // s2rr) where there is one: without range rate it refuses every frame.
+    const std::string twin = std::string(scenario) + "rr";
+    bool rr_scenario = false;
+    for (const auto& e : scenario_registry()) rr_scenario = rr_scenario || twin == e.name;
+    const auto rr_frames = rr_scenario ? make_scenario(twin)->generate(1).frames : decltype(frames){};
     for (const FilterEntry& filter : filter_registry()) {
       if (filter.kind != kestrel::hal::FrameKind::kRadar) continue;
+      const bool needs_range_rate = std::string(filter.name).find("-rr") != std::string::npos;
+      if (needs_range_rate && !rr_scenario) continue;
       for (const double gap : gaps_s) {
         INFO(scenario << ", " << filter.name << ", dropout " << gap << " s");
-        const Outcome o = run(filter, with_dropout(frames, gap));
+        const Outcome o = run(filter, with_dropout(needs_range_rate ? rr_frames : frames, gap));
         CHECK(o.bad_covariance == 0);
         CHECK(o.confirmed_at_end);
         // Past the 600 s forward-jump limit, the first two frames on the
