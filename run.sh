@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # Kestrel's two entry points on a fresh Debian machine (README quick start):
-#   bash run.sh sim    install what is missing, build host-release, run
-#                      kestrel-sim on the default suite -> results/
-#   bash run.sh test   install what is missing, build host-release, run the
+#   bash run.sh sim    install what the simulator needs, build kestrel-sim
+#                      alone (host-sim preset), run the main job
+#                      -> results/report.md
+#   bash run.sh test   install everything, build host-release, run the
 #                      whole CTest suite (including the cross builds)
 # .ci/run calls `bash run.sh test`.
 set -euo pipefail
@@ -22,9 +23,20 @@ PACKAGES=(
   clang libclang-rt-14-dev
 )
 
+# What `run.sh sim` needs: the compiler, core's and kestrel-sim's
+# libraries, and matplotlib for the figures.
+SIM_PACKAGES=(
+  cmake make g++
+  libeigen3-dev libcli11-dev nlohmann-json3-dev
+  python3 python3-matplotlib
+)
+
+# install_deps [package...]: install those not yet installed (default: all).
 install_deps() {
+  local wanted=("${@}")
+  ((${#wanted[@]})) || wanted=("${PACKAGES[@]}")
   local missing=()
-  for p in "${PACKAGES[@]}"; do
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   if ((${#missing[@]})); then
@@ -45,9 +57,10 @@ build_host() {
 
 case "${1:-}" in
   sim)
-    install_deps
-    build_host
-    ./build/host-release/host_sim/kestrel-sim suite --out results "${@:2}"
+    install_deps "${SIM_PACKAGES[@]}"
+    cmake --preset host-sim >/dev/null
+    cmake --build --preset host-sim -j "$(njobs)"
+    ./build/host-sim/host_sim/kestrel-sim suite --out results "${@:2}"
     ;;
   test)
     install_deps

@@ -29,6 +29,15 @@ namespace kestrel::sim::cli {
 
 namespace {
 
+const char* frame_kind_name(hal::FrameKind kind) {
+  switch (kind) {
+    case hal::FrameKind::kRadar: return "radar";
+    case hal::FrameKind::kSonar: return "sonar";
+    case hal::FrameKind::kPcl: return "PCL";
+  }
+  return "unknown";
+}
+
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open '" + path.string() + "'");
@@ -126,6 +135,18 @@ int cmd_replay(const ReplayOptions& o) {
     std::fprintf(stderr, "kestrel-sim: warning: %s held no frames%s, nothing to replay\n", source.c_str(),
                  skipped > 0 ? " that decode" : "");
     return kExitNoFrames;
+  }
+
+  // A stream of another sensor kind decodes, but every frame would be
+  // refused as the wrong kind: an empty run, never a result.
+  const std::size_t of_filter_kind = static_cast<std::size_t>(
+      std::count_if(frames.begin(), frames.end(), [&](const MeasurementFrame& f) { return f.kind == filter.kind; }));
+  if (of_filter_kind == 0) {
+    throw std::runtime_error(source + ": its " + std::to_string(frames.size()) + " frames are " +
+                             frame_kind_name(frames.front().kind) + " frames; filter '" + std::string(filter.name) +
+                             "' takes " + frame_kind_name(filter.kind) +
+                             " frames (replay runs the radar filters of `kestrel-sim list`; PCL and sonar streams "
+                             "are not replayed yet)");
   }
 
   const FilterOptions& options = o.filter.options;

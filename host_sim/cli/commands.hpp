@@ -56,14 +56,22 @@ int cmd_run(const RunOptions& o);
 /// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).
 void print_cat062_written(const std::string& path, const StreamRunResult& r);
 
+/// The main job (`bash run.sh sim`): the four papers' systems in one
+/// report, results/report.md (cli/cmd_suite.cpp).
 struct SuiteOptions {
-  std::vector<std::string> scenarios{"s1", "s2"};
-  std::vector<std::string> filters{"ekf-ca"};
-  FilterOptions options;
+  /// Parts to run: radar (S1/S2 filters, paper 000), mc001 (paper 001's
+  /// filter comparison), pcl (paper 002), uw (paper 003).
+  std::vector<std::string> parts{"radar", "mc001", "pcl", "uw"};
+  std::vector<std::string> scenarios{"s1", "s2"};  ///< Radar scenarios.
+  /// Radar filters, each NAME or NAME:qj=X (a tuned EKF-CA beside the
+  /// paper's qj 1.6).
+  std::vector<std::string> filters{"ekf-ca", "ekf-ca:qj=160", "r2aekf"};
+  FilterOptions options;          ///< --qj, --gate-d2 for entries without their own.
   double budget_us = 1000.0;
-  std::size_t runs = 20;
+  std::size_t runs = 50;          ///< Runs per radar entry, PCL and UW.
+  std::uint64_t mc_runs = 100;    ///< Runs per MC-001 cell.
   std::uint64_t seed = 0;
-  unsigned jobs = 1;
+  unsigned jobs = 0;              ///< 0: every core.
   std::string out = "results";
   bool plots = true;
 };

@@ -5,6 +5,7 @@
 // command line; each subcommand lives in its own cmd_*.cpp.
 #include <cstdio>
 #include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +15,7 @@
 #include "cli/cmd_scalars.hpp"
 #include "cli/cmd_uw.hpp"
 #include "cli/commands.hpp"
+#include "kestrel/version.hpp"
 
 namespace {
 
@@ -71,16 +73,20 @@ int main(int argc, char** argv) {
   add_cat062_output(run_cmd, run.asterix_out);
 
   SuiteOptions suite;
-  CLI::App* suite_cmd = app.add_subcommand("suite", "The default suite: S1 and S2 with EKF-CA; combined summary");
-  suite_cmd->add_option("--scenarios", suite.scenarios, "Scenarios")->capture_default_str();
-  suite_cmd->add_option("--filters", suite.filters, "Filters")->capture_default_str();
+  CLI::App* suite_cmd = app.add_subcommand(
+      "suite", "The main job: each paper's system (radar S1/S2, MC-001, PCL-002, UW-003) and one report.md");
+  suite_cmd->add_option("--parts", suite.parts, "Parts: radar, mc001, pcl, uw")->capture_default_str();
+  suite_cmd->add_option("--scenarios", suite.scenarios, "Radar scenarios")->capture_default_str();
+  suite_cmd->add_option("--filters", suite.filters, "Radar filters, NAME or NAME:qj=X")->capture_default_str();
   add_model_options(suite_cmd, suite.options);
   suite_cmd->add_option("--budget-us", suite.budget_us, "Step budget, us")->capture_default_str();
-  suite_cmd->add_option("--runs,-n", suite.runs, "Monte Carlo runs per scenario and filter")->capture_default_str();
+  suite_cmd->add_option("--runs,-n", suite.runs, "Runs per radar entry, of PCL-002 and of UW-003")
+      ->capture_default_str();
+  suite_cmd->add_option("--mc-runs", suite.mc_runs, "Runs per MC-001 cell")->capture_default_str();
   suite_cmd->add_option("--seed", suite.seed, "Seed of run 0")->capture_default_str();
-  suite_cmd->add_option("--jobs,-j", suite.jobs, "Worker threads")->capture_default_str();
+  suite_cmd->add_option("--jobs,-j", suite.jobs, "Worker threads (0: every core)")->capture_default_str();
   suite_cmd->add_option("--out,-o", suite.out, "Output directory")->capture_default_str();
-  suite_cmd->add_flag("!--no-plots", suite.plots, "Do not run the plot script");
+  suite_cmd->add_flag("!--no-plots", suite.plots, "Do not run the plot scripts");
 
   ReplayOptions replay;
   CLI::App* replay_cmd = app.add_subcommand("replay", "Run a filter over a recorded stream file or plot CSV");
@@ -126,6 +132,20 @@ int main(int argc, char** argv) {
   CLI::App* merge_cmd = nullptr;
   add_montecarlo_commands(app, montecarlo, merge, montecarlo_cmd, merge_cmd);
 
+  app.set_version_flag("--version", "kestrel-sim " KESTREL_VERSION_STRING);
+  // CLI11 reports a mistyped subcommand as a missing one; name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands({})) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found = found || sub->check_name(argv[1]);
+    }
+    if (!found) {
+      std::fprintf(stderr, "kestrel-sim: error: unknown subcommand '%s' (known: %s)\n", argv[1], known.c_str());
+      return 2;
+    }
+  }
   CLI11_PARSE(app, argc, argv);
 
   try {

@@ -21,7 +21,7 @@ std::uint64_t budget_ns_from_us(double budget_us) {
 
 ScenarioReport run_scenario_report(const std::string& scenario_name, const std::string& filter_name,
                                    const MonteCarloConfig& config, const std::filesystem::path& out_dir,
-                                   bool plots) {
+                                   bool plots, const std::string& tag) {
   const auto scenario = make_scenario(scenario_name);
   const FilterEntry& filter = find_filter(filter_name);
   const ScenarioInfo& info = scenario->info();
@@ -33,7 +33,8 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
 
   const MonteCarloResult mc = run_monte_carlo(*scenario, filter, config);
   ScenarioReport report;
-  report.row = TableRow{info.name, std::string(filter.name), summarise(mc.runs, config.budget_ns)};
+  const std::string name = tag.empty() ? std::string(filter.name) : tag;
+  report.row = TableRow{info.name, name, summarise(mc.runs, config.budget_ns)};
 
   EntryContext context;
   context.scenario = info.name;
@@ -47,13 +48,15 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
   report.entry = summary_entry(context, report.row.summary);
 
   std::filesystem::create_directories(out_dir);
-  const RunFileNames names = run_file_names(out_dir, context.filter);
+  const RunFileNames names = run_file_names(out_dir, name);
   write_track_csv(names.tracks_csv, mc.first.stream);
   write_step_csv(names.steps_csv, mc.first.steps, mc.first.frames, info.loss_threshold_m);
   write_runs_csv(names.runs_csv, mc.runs);
-  merge_summary_file(out_dir / "summary.json", context.scenario, context.filter, report.entry);
+  merge_summary_file(out_dir / "summary.json", context.scenario, name, report.entry);
+  report.label = context.setup.label;
+  report.plot_prefix = names.plot_prefix;
   if (plots) {
-    plot_run(names.steps_csv, names.tracks_csv, names.plot_prefix,
+    report.plotted = plot_run(names.steps_csv, names.tracks_csv, names.plot_prefix,
              info.name + " / " + context.setup.label + " / seed " + std::to_string(config.base_seed),
              info.loss_threshold_m);
   }

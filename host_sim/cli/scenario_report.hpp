@@ -17,11 +17,16 @@ namespace kestrel::sim::cli {
 struct ScenarioReport {
   TableRow row;
   nlohmann::json entry;  ///< summary.json entry.
+  std::string label;     ///< The filter and its parameters ("EKF-CA (double), qj 160").
+  std::filesystem::path plot_prefix;  ///< <prefix>_xy.png, <prefix>_error.png
+  bool plotted = false;  ///< Both figures written by this run.
 };
 
+/// `tag` names the files and the summary entry (default: the filter's
+/// name), so one filter can run twice with different options.
 ScenarioReport run_scenario_report(const std::string& scenario_name, const std::string& filter_name,
                                    const MonteCarloConfig& config, const std::filesystem::path& out_dir,
-                                   bool plots);
+                                   bool plots, const std::string& tag = {});
 
 /// Step budget in ns from microseconds (CLI unit).
 std::uint64_t budget_ns_from_us(double budget_us);
