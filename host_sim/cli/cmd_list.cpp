@@ -6,20 +6,27 @@
 #include "cli/commands.hpp"
 #include "filters/filter_registry.hpp"
 #include "scenarios/registry.hpp"
+#include "scenarios/uw003.hpp"
 
 namespace kestrel::sim::cli {
 
 int cmd_list() {
-  std::printf("scenarios:\n");
+  std::printf("radar scenarios (run, timing, generate; every radar filter below):\n");
   for (const ScenarioEntry& e : scenario_registry()) {
     const auto s = e.make();
     const ScenarioInfo& i = s->info();
     std::printf("  %-6s %s (L = %g m)\n", std::string(e.name).c_str(), i.description.c_str(), i.loss_threshold_m);
   }
-  std::printf("filters:\n");
+  std::printf("radar filters (run, replay, timing, suite):\n");
   for (const FilterEntry& f : filter_registry()) {
-    std::printf("  %-11s %s\n", std::string(f.name).c_str(), std::string(f.description).c_str());
+    std::printf("  %-13s %s\n", std::string(f.name).c_str(), std::string(f.description).c_str());
   }
+  std::printf("PCL scenarios (pcl, generate; the PCL tracker with --associator nn|gnn|pda, --manager m-of-n|score):\n"
+              "  pcl002 pcl002-hard\n");
+  std::printf("sonar scenarios (uw, generate; the underwater tracker):\n ");
+  for (const std::string& n : uw_scenario_names()) std::printf(" %s", n.c_str());
+  std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
+              "CRPF-100/300/500\n");
   return 0;
 }
 

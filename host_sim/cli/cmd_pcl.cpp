@@ -129,8 +129,9 @@ int cmd_pcl(const PclOptions& o) {
   write_pcl_runs_csv(dir / "pcl_runs.csv", mc.runs);
   write_pcl_run_csvs(dir, scenario, mc.first_run, mc.first_output, config.tolerance);
   write_json_file(dir / "pcl_summary.json", pcl_summary_json(scenario, params, config, s));
+  bool plotted = false;
   if (o.plots) {
-    plot_pcl(dir, scenario.name + " / PCL KF, " + std::string(policy_name(kAssociatorNames, config.policies.associator)) +
+    plotted = plot_pcl(dir, scenario.name + " / PCL KF, " + std::string(policy_name(kAssociatorNames, config.policies.associator)) +
                       ", " + manager_label(params, config.policies.manager) + " / seed " + std::to_string(o.seed));
   }
 
@@ -158,7 +159,7 @@ int cmd_pcl(const PclOptions& o) {
               static_cast<unsigned long long>(s.timing.max_ns), s.timing.mean_ns, s.timing.steps, o.jobs,
               o.jobs == 1 ? "" : "s");
   std::printf("wrote %s/{pcl_runs.csv, pcl_truth.csv, pcl_candidates.csv, pcl_tracks.csv, pcl_summary.json%s}\n",
-              dir.c_str(), o.plots ? ", pcl_range_doppler.png" : "");
+              dir.c_str(), plotted ? ", pcl_range_doppler.png" : "");
   return 0;
 }
 

@@ -90,7 +90,8 @@ int run_single(const UwOptions& o) {
   write_uw_steps_csv(dir / "uw_steps.csv", s);
   write_uw_run_csvs(dir, mc.first_run, mc.first_output);
   write_uw_json(dir / "uw_summary.json", uw_summary_json(scenario, params, config, s));
-  if (o.plots) plot_uw(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
+  const bool plotted =
+      o.plots && plot_uw(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
 
   std::printf("%s: %zu runs (seeds %llu..%llu), UW EKF, %s, sa %g m/s^2, c noise %g m/s/sqrt(s)\n",
               scenario.name.c_str(), s.runs, static_cast<unsigned long long>(o.seed),
@@ -118,7 +119,7 @@ int run_single(const UwOptions& o) {
               static_cast<unsigned long long>(s.timing.max_ns), s.timing.mean_ns, s.timing.steps, o.jobs,
               o.jobs == 1 ? "" : "s");
   std::printf("wrote %s/{uw_runs.csv, uw_steps.csv, uw_truth.csv, uw_arrivals.csv, uw_track.csv, uw_summary.json%s}\n",
-              dir.c_str(), o.plots ? ", uw_track.png, uw_error.png, uw_sound_speed.png" : "");
+              dir.c_str(), plotted ? ", uw_track.png, uw_error.png, uw_sound_speed.png" : "");
   return 0;
 }
 

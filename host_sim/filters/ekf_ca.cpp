@@ -21,26 +21,6 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 
-FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
-  const RadarTrackerParams p = ekf_ca_params(options);
-  char label[96];
-  if (options.confirmed_gate_d2.has_value()) {
-    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g, gate d2 %g", scalar, p.qj, *options.confirmed_gate_d2);
-  } else {
-    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g", scalar, p.qj);
-  }
-  // An ungated run has no threshold: JSON null.
-  return FilterSetup{label,
-                     {{"qj", p.qj},
-                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
-                      {"sigma_range_m", p.sigma_range_m},
-                      {"sigma_bearing_rad", p.sigma_bearing_rad},
-                      {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
-                      {"confirm_m", p.confirm_m},
-                      {"confirm_n", p.confirm_n},
-                      {"max_coast_misses", p.max_coast_misses}}};
-}
-
 }  // namespace
 
 template <class Scalar>
@@ -71,8 +51,28 @@ RadarTrackerParams ekf_ca_params(const FilterOptions& options) {
   return p;
 }
 
-FilterSetup ekf_ca_setup(const FilterOptions& options) { return setup_with(options, "double"); }
-FilterSetup ekf_ca_f32_setup(const FilterOptions& options) { return setup_with(options, "float"); }
+FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, const char* scalar) {
+  const RadarTrackerParams p = ekf_ca_params(options);
+  char label[96];
+  if (options.confirmed_gate_d2.has_value()) {
+    std::snprintf(label, sizeof label, "%s (%s), qj %g, gate d2 %g", name, scalar, p.qj, *options.confirmed_gate_d2);
+  } else {
+    std::snprintf(label, sizeof label, "%s (%s), qj %g", name, scalar, p.qj);
+  }
+  // An ungated run has no threshold: JSON null.
+  return FilterSetup{label,
+                     {{"qj", p.qj},
+                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
+                      {"sigma_range_m", p.sigma_range_m},
+                      {"sigma_bearing_rad", p.sigma_bearing_rad},
+                      {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
+                      {"confirm_m", p.confirm_m},
+                      {"confirm_n", p.confirm_n},
+                      {"max_coast_misses", p.max_coast_misses}}};
+}
+
+FilterSetup ekf_ca_setup(const FilterOptions& options) { return radar_filter_setup(options, "EKF-CA", "double"); }
+FilterSetup ekf_ca_f32_setup(const FilterOptions& options) { return radar_filter_setup(options, "EKF-CA", "float"); }
 
 StreamRunResult run_ekf_ca(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
   return run_typed<double>(std::move(stream), options, budget_ns);

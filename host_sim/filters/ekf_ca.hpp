@@ -14,6 +14,10 @@ namespace kestrel::sim {
 /// The core parameters the options resolve to.
 RadarTrackerParams ekf_ca_params(const FilterOptions& options);
 
+/// Label and parameters of a radar filter on the CA-2D model and the
+/// polar radar ("UKF (float), qj 160"); every such filter shares them.
+FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, const char* scalar);
+
 /// The host board's EKF-CA tracker for these options (double and float are
 /// instantiated). Unless options.confirmed_gate_d2 is set, confirmed tracks
 /// are ungated (FilterOptions).

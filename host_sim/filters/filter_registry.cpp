@@ -8,6 +8,7 @@
 #include "filters/ekf_ca_fixed.hpp"
 #include "filters/ekf_ca_rr.hpp"
 #include "filters/r2aekf_filters.hpp"
+#include "filters/radar_filter_family.hpp"
 
 namespace kestrel::sim {
 
@@ -32,6 +33,18 @@ const FilterEntry kFilters[] = {
      &r2aekf_paper_setup, &run_r2aekf_paper},
     {"r2aekf-f32", "R2-AEKF default mode in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &r2aekf_f32_setup,
      &run_r2aekf_f32},
+    {"ukf", "UKF (paper 001), CA-2D, polar radar; double", hal::FrameKind::kRadar, &ukf_setup, &run_ukf},
+    {"ukf-f32", "the same UKF in float", hal::FrameKind::kRadar, &ukf_f32_setup, &run_ukf_f32},
+    {"cdkf", "CDKF (paper 001), CA-2D, polar radar; double", hal::FrameKind::kRadar, &cdkf_setup, &run_cdkf},
+    {"cdkf-f32", "the same CDKF in float", hal::FrameKind::kRadar, &cdkf_f32_setup, &run_cdkf_f32},
+    {"sr-ukf", "square-root UKF (paper 001); double", hal::FrameKind::kRadar, &sr_ukf_setup, &run_sr_ukf},
+    {"sr-ukf-f32", "the same SR-UKF in float", hal::FrameKind::kRadar, &sr_ukf_f32_setup, &run_sr_ukf_f32},
+    {"sr-cdkf", "square-root CDKF (paper 001); double", hal::FrameKind::kRadar, &sr_cdkf_setup, &run_sr_cdkf},
+    {"sr-cdkf-f32", "the same SR-CDKF in float", hal::FrameKind::kRadar, &sr_cdkf_f32_setup, &run_sr_cdkf_f32},
+    {"crpf-100",
+     "cost-reference particle filter, 100 particles (paper 001); double; does not hold S1/S2 tracks (docs/filters.md)",
+     hal::FrameKind::kRadar, &crpf100_setup, &run_crpf100},
+    {"crpf-100-f32", "the same CRPF in float", hal::FrameKind::kRadar, &crpf100_f32_setup, &run_crpf100_f32},
 };
 }  // namespace
 
