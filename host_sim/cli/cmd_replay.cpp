@@ -149,7 +149,8 @@ int cmd_replay(const ReplayOptions& o) {
                              "are not replayed yet)");
   }
 
-  const FilterOptions& options = o.filter.options;
+  FilterOptions options = o.filter.options;
+  options.board_gate = !o.ungated;
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
   ScoringConfig scoring;
   scoring.first_scored_step = o.first_scored_step;

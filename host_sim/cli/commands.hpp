@@ -87,6 +87,9 @@ struct ReplayOptions {
   std::size_t first_scored_step = 2;
   std::string out = "results/replay";
   bool plots = true;
+  /// Score as the papers score filters: confirmed tracks ungated. The
+  /// default gates them as a board does (FilterOptions::board_gate).
+  bool ungated = false;
   Cat062Output asterix_out;
 };
 /// Exit status of `replay` when its input held no frames (a 0-byte stream,

@@ -104,6 +104,8 @@ int main(int argc, char** argv) {
   replay_cmd->add_option("--first-scored-step", replay.first_scored_step, "First frame index scored")
       ->capture_default_str();
   replay_cmd->add_option("--out,-o", replay.out, "Output directory")->capture_default_str();
+  replay_cmd->add_flag("--ungated", replay.ungated,
+                       "Confirmed tracks ungated, as the papers score filters (default: the board's gate)");
   replay_cmd->add_flag("!--no-plots", replay.plots, "Do not run the plot script");
   add_cat062_output(replay_cmd, replay.asterix_out);
 

@@ -37,8 +37,7 @@ host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& 
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
-  config.gate_confirmed_threshold =
-      options.confirmed_gate_d2.has_value() ? T::from_double(*options.confirmed_gate_d2) : T::max_value();
+  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
   return host::BoardRadarTracker<EkfCa<Scalar>>(EkfCa<Scalar>(motion, radar), init, config);
 }
 
@@ -54,21 +53,18 @@ RadarTrackerParams ekf_ca_params(const FilterOptions& options) {
 FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, const char* scalar) {
   const RadarTrackerParams p = ekf_ca_params(options);
   char label[96];
-  if (options.confirmed_gate_d2.has_value()) {
-    std::snprintf(label, sizeof label, "%s (%s), qj %g, gate d2 %g", name, scalar, p.qj, *options.confirmed_gate_d2);
-  } else {
-    std::snprintf(label, sizeof label, "%s (%s), qj %g", name, scalar, p.qj);
-  }
+  std::snprintf(label, sizeof label, "%s (%s), qj %g%s", name, scalar, p.qj, gate_label(options).c_str());
+  FilterSetup setup{label,
+                    {{"qj", p.qj},
+                     {"sigma_range_m", p.sigma_range_m},
+                     {"sigma_bearing_rad", p.sigma_bearing_rad},
+                     {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
+                     {"confirm_m", p.confirm_m},
+                     {"confirm_n", p.confirm_n},
+                     {"max_coast_misses", p.max_coast_misses}}};
   // An ungated run has no threshold: JSON null.
-  return FilterSetup{label,
-                     {{"qj", p.qj},
-                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
-                      {"sigma_range_m", p.sigma_range_m},
-                      {"sigma_bearing_rad", p.sigma_bearing_rad},
-                      {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
-                      {"confirm_m", p.confirm_m},
-                      {"confirm_n", p.confirm_n},
-                      {"max_coast_misses", p.max_coast_misses}}};
+  add_gate_parameters(options, setup.parameters);
+  return setup;
 }
 
 FilterSetup ekf_ca_setup(const FilterOptions& options) { return radar_filter_setup(options, "EKF-CA", "double"); }

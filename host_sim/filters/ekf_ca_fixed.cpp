@@ -19,7 +19,6 @@ namespace {
 /// What make_ekf_ca_tracker() builds for double and float, on Q.
 template <class Q>
 host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& options) {
-  using T = ScalarTraits<Q>;
   const RadarTrackerParams p = ekf_ca_params(options);
   const RadarTrackerScalars<Q> s = radar_tracker_scalars<Q>(p);
   CaMotion<Q> motion;
@@ -29,8 +28,7 @@ host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& option
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   const TwoPointInitiator<CaMotion<Q>, CaPolarRadar<Q>> init{radar, s.max_speed_mps, s.init_accel_sigma_mps2};
   TrackerConfig<Q, 2> config = radar_tracker_config<Q>(p, s);
-  config.gate_confirmed_threshold =
-      options.confirmed_gate_d2.has_value() ? T::from_double(*options.confirmed_gate_d2) : T::max_value();
+  config.gate_confirmed_threshold = confirmed_gate_threshold<Q>(options);
   return host::BoardRadarTracker<EkfCa<Q>>(EkfCa<Q>(motion, radar), init, config);
 }
 
@@ -42,22 +40,7 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
 }
 
 FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
-  const RadarTrackerParams p = ekf_ca_params(options);
-  char label[96];
-  if (options.confirmed_gate_d2.has_value()) {
-    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g, gate d2 %g", scalar, p.qj, *options.confirmed_gate_d2);
-  } else {
-    std::snprintf(label, sizeof label, "EKF-CA (%s), qj %g", scalar, p.qj);
-  }
-  return FilterSetup{label,
-                     {{"qj", p.qj},
-                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
-                      {"sigma_range_m", p.sigma_range_m},
-                      {"sigma_bearing_rad", p.sigma_bearing_rad},
-                      {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
-                      {"confirm_m", p.confirm_m},
-                      {"confirm_n", p.confirm_n},
-                      {"max_coast_misses", p.max_coast_misses}}};
+  return radar_filter_setup(options, "EKF-CA", scalar);
 }
 
 }  // namespace

@@ -26,12 +26,8 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
   // EKF-CA's parameters, plus the range-rate channel.
   FilterSetup s = ekf_ca_setup(options);
   char label[112];
-  if (options.confirmed_gate_d2.has_value()) {
-    std::snprintf(label, sizeof label, "EKF-CA-RR (%s), qj %g, srr %g, gate d2 %g", scalar, p.radar.qj,
-                  p.sigma_range_rate_mps, *options.confirmed_gate_d2);
-  } else {
-    std::snprintf(label, sizeof label, "EKF-CA-RR (%s), qj %g, srr %g", scalar, p.radar.qj, p.sigma_range_rate_mps);
-  }
+  std::snprintf(label, sizeof label, "EKF-CA-RR (%s), qj %g, srr %g%s", scalar, p.radar.qj, p.sigma_range_rate_mps,
+                gate_label(options).c_str());
   s.label = label;
   s.parameters["sigma_range_rate_mps"] = p.sigma_range_rate_mps;
   s.parameters["max_range_rate_mps"] = p.max_range_rate_mps;
@@ -42,7 +38,6 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
 
 template <class Scalar>
 host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOptions& options) {
-  using T = ScalarTraits<Scalar>;
   const RadarRangeRateTrackerParams p = ekf_ca_rr_params(options);
   const RadarRangeRateTrackerScalars<Scalar> s = radar_range_rate_tracker_scalars<Scalar>(p);
   // What make_radar_range_rate_tracker() builds, plus the confirmed-track
@@ -56,8 +51,7 @@ host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOpti
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadarRangeRate<Scalar>> init{radar, s.radar.max_speed_mps,
                                                                                 s.radar.init_accel_sigma_mps2};
   TrackerConfig<Scalar, 3> config = radar_range_rate_tracker_config<Scalar>(p, s);
-  config.gate_confirmed_threshold =
-      options.confirmed_gate_d2.has_value() ? T::from_double(*options.confirmed_gate_d2) : T::max_value();
+  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
   return host::BoardRadarTracker<EkfCaRr<Scalar>>(EkfCaRr<Scalar>(motion, radar), init, config);
 }
 

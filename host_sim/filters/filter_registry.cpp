@@ -2,6 +2,8 @@
 #include "filters/filter_registry.hpp"
 
 #include <cctype>
+#include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "filters/ekf_ca.hpp"
@@ -49,6 +51,20 @@ const FilterEntry kFilters[] = {
 }  // namespace
 
 std::span<const FilterEntry> filter_registry() { return kFilters; }
+
+std::string gate_label(const FilterOptions& options) {
+  if (options.confirmed_gate_d2.has_value()) {
+    char text[48];
+    std::snprintf(text, sizeof text, ", gate d2 %g", *options.confirmed_gate_d2);
+    return text;
+  }
+  return options.board_gate ? ", board gate" : "";
+}
+
+void add_gate_parameters(const FilterOptions& options, std::map<std::string, double>& parameters) {
+  parameters["confirmed_gate_d2"] = options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity());
+  parameters["board_gate"] = !options.confirmed_gate_d2.has_value() && options.board_gate ? 1.0 : 0.0;
+}
 
 const FilterEntry& find_filter(std::string_view name) {
   std::string key(name);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "kestrel/hal/frame.hpp"
+#include "kestrel/scalar/scalar_traits.hpp"
 #include "pipeline/stream_run_result.hpp"
 
 namespace kestrel::sim {
@@ -27,7 +28,29 @@ struct FilterOptions {
   /// as the papers score filters (SPEC 9 single target, no clutter); a
   /// gate there only turns filter lag into a dropped and restarted track.
   std::optional<double> confirmed_gate_d2;
+  /// Without confirmed_gate_d2: gate confirmed tracks as a board does (the
+  /// chi-square quantile of TrackerConfig::gate_confirmed) instead of not
+  /// at all. `replay` sets it: recorded data has outliers, and an ungated
+  /// track follows them.
+  bool board_gate = false;
 };
+
+/// TrackerConfig::gate_confirmed_threshold for these options: the d2
+/// given, 0 (the board's chi-square gate), or the largest value (ungated).
+template <class Scalar>
+Scalar confirmed_gate_threshold(const FilterOptions& options) {
+  using T = ScalarTraits<Scalar>;
+  if (options.confirmed_gate_d2.has_value()) return T::from_double(*options.confirmed_gate_d2);
+  if (options.board_gate) return Scalar{};
+  return T::max_value();
+}
+
+/// The gate in a filter's label: ", gate d2 13.8", ", board gate" or "".
+std::string gate_label(const FilterOptions& options);
+
+/// The gate parameters of summary.json: confirmed_gate_d2 (infinity when
+/// ungated or when the board's gate applies) and board_gate (0 or 1).
+void add_gate_parameters(const FilterOptions& options, std::map<std::string, double>& parameters);
 
 /// The parameters a run actually used, for summary.json and the table.
 struct FilterSetup {

@@ -61,8 +61,7 @@ host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, co
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
-  config.gate_confirmed_threshold =
-      options.confirmed_gate_d2.has_value() ? T::from_double(*options.confirmed_gate_d2) : T::max_value();
+  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
   return host::BoardRadarTracker<Filter>(prototype, init, config);
 }
 
@@ -157,11 +156,9 @@ template host::BoardRadarTracker<R2AekfCa<float>> make_r2aekf_tracker<float>(con
 FilterSetup r2aekf_setup_for(const FilterOptions& options, const R2AekfConfig<double>& c, const char* label) {
   const RadarTrackerParams p = params_of(options);
   char text[160];
-  std::snprintf(text, sizeof text, "%s, qj %g%s", label, p.qj,
-                options.confirmed_gate_d2.has_value() ? ", gated" : "");
-  return FilterSetup{text,
+  std::snprintf(text, sizeof text, "%s, qj %g%s", label, p.qj, gate_label(options).c_str());
+  FilterSetup setup{text,
                      {{"qj", p.qj},
-                      {"confirmed_gate_d2", options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity())},
                       {"sigma_range_m", p.sigma_range_m},
                       {"sigma_bearing_rad", p.sigma_bearing_rad},
                       {"paper_mode", c.mode == R2AekfMode::kPaper ? 1.0 : 0.0},
@@ -186,6 +183,8 @@ FilterSetup r2aekf_setup_for(const FilterOptions& options, const R2AekfConfig<do
                       {"u_q", c.u_q},
                       {"d_q", c.d_q},
                       {"full_rotated_q", c.q_form == R2AekfQForm::kFullRotated ? 1.0 : 0.0}}};
+  add_gate_parameters(options, setup.parameters);
+  return setup;
 }
 
 FilterSetup r2aekf_setup(const FilterOptions& options) {

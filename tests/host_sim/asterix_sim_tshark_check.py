@@ -4,7 +4,7 @@
 asterix.tshark_judges_kestrel_sim, label asterix; docs/asterix.md).
 
   kestrel-sim generate --scenario s1 --seed 1 --asterix --sac 25  -> s1.ast (CAT048)
-  kestrel-sim replay --asterix s1.ast --asterix-out tracks062.ast --sac 7 --sic 9
+  kestrel-sim replay --asterix s1.ast --ungated --asterix-out tracks062.ast --sac 7 --sic 9
                                                                   -> tracks CSV + CAT062
 
 Both .ast files are split into their data blocks (by LEN), one UDP datagram
@@ -80,7 +80,9 @@ def main():
     sim, work = Path(sys.argv[1]), Path(sys.argv[2])
     work.mkdir(parents=True, exist_ok=True)
     run(sim, "generate", "--scenario", "s1", "--seed", "1", "--out", work / "s1.kstr", "--asterix", "--sac", "25")
-    run(sim, "replay", "--asterix", work / "s1.ast", "--out", work / "replay", "--no-plots",
+    # Ungated, as S1 is scored: one track over the whole run, so every
+    # frame after confirmation has a report to compare.
+    run(sim, "replay", "--asterix", work / "s1.ast", "--out", work / "replay", "--no-plots", "--ungated",
         "--asterix-out", work / "tracks062.ast", "--sac", "7", "--sic", "9")
 
     c = Checker()
