@@ -2,18 +2,14 @@
 #include "campaigns/mc001.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <exception>
 #include <fstream>
 #include <memory>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 
 #include "kestrel/filters/crpf.hpp"
 #include "kestrel/filters/ekf.hpp"
@@ -23,6 +19,7 @@
 #include "kestrel/models/measurement/polar_radar.hpp"
 #include "kestrel/models/motion/constant_velocity_2d.hpp"
 #include "metrics/monte_carlo_stats.hpp"
+#include "pipeline/worker_pool.hpp"
 
 #ifndef KESTREL_SIM_PLOT_SCRIPT
 #error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
@@ -136,6 +133,7 @@ template <int kN>
 Record run_crpf(std::size_t cell, std::uint64_t run, std::size_t filter, const RunData& d) {
   CrpfParams<double> params;  // SPEC 5 defaults: lambda 0.8, beta 2, delta 1, kick 2 m/s^2
   params.seed = crpf_seed(cell, run, filter);
+  params.refuse_indefinite = false;  // scored on the estimate alone, as paper 001 does
   auto f = std::make_unique<Crpf<Motion, Radar, kN>>(motion_for(kTuning), radar_for(kTuning), params);
   return run_filter(*f, d);
 }
@@ -214,58 +212,15 @@ Records run_campaign(const CampaignConfig& config) {
   const std::uint64_t items = runs * kCells;
   out.records.resize(static_cast<std::size_t>(items) * kFilters);
 
-  std::atomic<std::uint64_t> next{0};
-  std::atomic<std::uint64_t> done{0};
-  std::atomic<bool> finished{false};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    for (;;) {
-      const std::uint64_t i = next.fetch_add(1);
-      if (i >= items) return;
-      try {
+  for_each_index(
+      static_cast<std::size_t>(items), out.threads,
+      [&](std::size_t i) {
         const std::size_t cell = static_cast<std::size_t>(i / runs);
         const std::uint64_t run = config.run_begin + i % runs;
         const auto recs = run_one(cell, run);
         for (std::size_t f = 0; f < kFilters; ++f) out.at(cell, run, f) = recs[f];
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = items;
-      }
-      done.fetch_add(1);
-    }
-  };
-  const auto start = std::chrono::steady_clock::now();
-  const auto elapsed = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  std::thread reporter;
-  if (config.progress) {
-    reporter = std::thread([&] {
-      while (!finished.load()) {
-        const std::uint64_t n = done.load();
-        const double t = elapsed();
-        const double eta = n > 0 ? t * static_cast<double>(items - n) / static_cast<double>(n) : 0.0;
-        std::fprintf(stderr, "\rmc001: %llu/%llu cell-runs (%.0f %%), %.0f s elapsed, about %.0f s left   ",
-                     static_cast<unsigned long long>(n), static_cast<unsigned long long>(items),
-                     100.0 * static_cast<double>(n) / static_cast<double>(items), t, eta);
-        for (int i = 0; i < 10 && !finished.load(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      }
-    });
-  }
-  std::vector<std::thread> threads;
-  for (unsigned j = 1; j < out.threads; ++j) threads.emplace_back(worker);
-  worker();
-  for (std::thread& t : threads) t.join();
-  finished = true;
-  if (reporter.joinable()) {
-    reporter.join();
-    std::fprintf(stderr, "\rmc001: %llu/%llu cell-runs (100 %%), %.1f s with %u thread%s                 \n",
-                 static_cast<unsigned long long>(items), static_cast<unsigned long long>(items), elapsed(),
-                 out.threads, out.threads == 1 ? "" : "s");
-  }
-  if (failure) std::rethrow_exception(failure);
+      },
+      config.progress ? Progress{"mc001", "cell-runs"} : Progress{});
   return out;
 }
 

@@ -77,6 +77,19 @@ struct SuiteOptions {
 };
 int cmd_suite(const SuiteOptions& o);
 
+/// `sweep`: one scenario and filter over values of one parameter.
+struct SweepOptions {
+  std::string scenario;
+  FilterChoice filter;
+  std::string set;          ///< "qj=1.6,16,160" or "gate-d2=9.2,13.8".
+  std::size_t runs = 20;
+  std::uint64_t seed = 0;
+  unsigned jobs = 1;
+  std::string out;          ///< Default results/sweep-<scenario>-<filter>.
+  bool plots = false;
+};
+int cmd_sweep(const SweepOptions& o);
+
 struct ReplayOptions {
   std::string stream;       ///< Wire stream file, or
   std::string csv;          ///< radar plot CSV, or

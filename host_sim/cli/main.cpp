@@ -88,6 +88,17 @@ int main(int argc, char** argv) {
   suite_cmd->add_option("--out,-o", suite.out, "Output directory")->capture_default_str();
   suite_cmd->add_flag("!--no-plots", suite.plots, "Do not run the plot scripts");
 
+  SweepOptions sweep;
+  CLI::App* sweep_cmd = app.add_subcommand("sweep", "One scenario and filter over values of one parameter (same seeds)");
+  sweep_cmd->add_option("--scenario,-s", sweep.scenario, "Scenario (see `list`)")->required();
+  add_filter_options(sweep_cmd, sweep.filter);
+  sweep_cmd->add_option("--set", sweep.set, "KEY=V1,V2,...: qj or gate-d2, e.g. qj=1.6,16,160,500")->required();
+  sweep_cmd->add_option("--runs,-n", sweep.runs, "Monte Carlo runs per value")->capture_default_str();
+  sweep_cmd->add_option("--seed", sweep.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
+  sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
+  sweep_cmd->add_option("--out,-o", sweep.out, "Output directory (default results/sweep-<scenario>-<filter>)");
+  sweep_cmd->add_flag("--plots", sweep.plots, "Draw each value's figures");
+
   ReplayOptions replay;
   CLI::App* replay_cmd = app.add_subcommand("replay", "Run a filter over a recorded stream file or plot CSV");
   auto* stream_opt = replay_cmd->add_option("--stream", replay.stream, "Wire stream file");
@@ -152,13 +163,14 @@ int main(int argc, char** argv) {
 
   try {
     // --scalar picks the filter's build on that scalar (cli/cmd_scalars.hpp).
-    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) {
+    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter, &sweep.filter}) {
       f->filter = filter_for_scalar(f->filter, f->scalar);
     }
     if (app.got_subcommand("list")) return cmd_list();
     if (app.got_subcommand(generate)) return cmd_generate(gen);
     if (app.got_subcommand(run_cmd)) return cmd_run(run);
     if (app.got_subcommand(suite_cmd)) return cmd_suite(suite);
+    if (app.got_subcommand(sweep_cmd)) return cmd_sweep(sweep);
     if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
     if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);

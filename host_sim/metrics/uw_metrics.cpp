@@ -2,13 +2,11 @@
 #include "metrics/uw_metrics.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
-#include <thread>
 #include <utility>
+
+#include "pipeline/worker_pool.hpp"
 
 #include <Eigen/Dense>
 
@@ -165,14 +163,9 @@ UwMonteCarloResult run_uw_monte_carlo(const UwScenarioConfig& scenario, const Un
                                       const UwMonteCarloConfig& config) {
   UwMonteCarloResult result;
   result.runs.resize(config.runs);
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  const auto worker = [&] {
-    for (;;) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= config.runs) return;
-      try {
+  for_each_index(
+      config.runs, config.jobs,
+      [&](std::size_t i) {
         const std::uint64_t seed = config.base_seed + i;
         UwScenarioRun run = generate_uw(scenario, seed);
         UwRunOutput out = run_uw(run, params, config.budget_ns);
@@ -182,23 +175,8 @@ UwMonteCarloResult run_uw_monte_carlo(const UwScenarioConfig& scenario, const Un
           result.first_run = std::move(run);
           result.first_output = std::move(out);
         }
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = config.runs;
-      }
-    }
-  };
-  const unsigned jobs =
-      std::max(1u, std::min<unsigned>(config.jobs, static_cast<unsigned>(std::max<std::size_t>(config.runs, 1))));
-  if (jobs == 1) {
-    worker();
-  } else {
-    std::vector<std::thread> threads;
-    for (unsigned j = 0; j < jobs; ++j) threads.emplace_back(worker);
-    for (std::thread& t : threads) t.join();
-  }
-  if (failure) std::rethrow_exception(failure);
+      },
+      Progress{scenario.name.c_str()});
   return result;
 }
 

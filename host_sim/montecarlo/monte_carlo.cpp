@@ -2,10 +2,9 @@
 #include "montecarlo/monte_carlo.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
-#include <mutex>
-#include <thread>
+#include <string>
+
+#include "pipeline/worker_pool.hpp"
 
 namespace kestrel::sim {
 
@@ -33,36 +32,16 @@ RunRecord record_of(const RunDetail& d) {
 MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& filter, const MonteCarloConfig& config) {
   MonteCarloResult result;
   result.runs.resize(config.runs);
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-
-  const auto worker = [&] {
-    for (;;) {
-      const std::size_t i = next.fetch_add(1);
-      if (i >= config.runs) return;
-      try {
+  const std::string label(filter.name);
+  for_each_index(
+      config.runs, config.jobs,
+      [&](std::size_t i) {
         RunDetail d = run_scenario_once(scenario, config.base_seed + i, filter, config.options, config.budget_ns,
                                         config.scoring);
         result.runs[i] = record_of(d);
-        if (i == 0) result.first = std::move(d);  // only worker that takes i == 0 writes it
-      } catch (...) {
-        const std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = config.runs;  // stop handing out work
-      }
-    }
-  };
-
-  const unsigned jobs = std::max(1u, std::min<unsigned>(config.jobs, static_cast<unsigned>(std::max<std::size_t>(config.runs, 1))));
-  if (jobs == 1) {
-    worker();
-  } else {
-    std::vector<std::thread> threads;
-    for (unsigned j = 0; j < jobs; ++j) threads.emplace_back(worker);
-    for (std::thread& t : threads) t.join();
-  }
-  if (failure) std::rethrow_exception(failure);
+        if (i == 0) result.first = std::move(d);  // only the worker that takes i == 0 writes it
+      },
+      Progress{label.c_str()});
   return result;
 }
 

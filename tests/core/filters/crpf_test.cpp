@@ -54,6 +54,7 @@ RunResult mc001_middle_run(std::uint64_t run, std::uint64_t filter_seed) {
   motion.sa = 0.1;
   kestrel::CrpfParams<double> params;
   params.seed = filter_seed;
+  params.refuse_indefinite = false;  // MC-001 scores the estimate alone
   Crpf<kN> f(motion, middle_radar(), params);
   const Eigen::Vector4d sd(50.0, 5.0, 50.0, 5.0);
   Eigen::Vector4d x0 = truth[0];
@@ -158,6 +159,7 @@ SCENARIO("selection concentrates the cloud on the particles of least risk", "[cr
     kestrel::CrpfParams<double> params;
     params.kick_sigma = 0.0;
     params.seed = 5;
+    params.refuse_indefinite = false;  // copies only: the selected cloud is singular by design
     const Radar radar = middle_radar();
     Crpf<200> f(motion, radar, params);
     const Eigen::Vector4d x0(1000.0, 0.0, 1000.0, 0.0);
@@ -247,4 +249,36 @@ SCENARIO("the CRPF runs on a model without noise_gain() and plugs into the Track
   REQUIRE(f.predict(1.0f) == Status::kOk);
   REQUIRE(f.update(F::MeasVec(std::hypot(1010.0f, 1005.0f), std::atan2(1005.0f, 1010.0f))) == Status::kOk);
   CHECK(std::hypot(f.x()(0) - 1010.0f, f.x()(3) - 1005.0f) < 15.0f);
+}
+
+SCENARIO("a CRPF whose cloud covariance is singular refuses the step unless told not to",
+         "[crpf][status][pd]") {
+  GIVEN("a prior with no spread in velocity: the drawn cloud's covariance has rank 2 of 4") {
+    Motion motion;
+    motion.sa = 0.1;
+    const Eigen::Vector4d x0(1000.0, 10.0, 1000.0, 5.0);
+    const Eigen::Matrix4d P0 = Eigen::Vector4d(100.0, 0.0, 100.0, 0.0).asDiagonal();
+    WHEN("positive definiteness is required (the default, what a tracker needs)") {
+      kestrel::CrpfParams<double> params;
+      params.seed = 3;
+      Crpf<64> f(motion, middle_radar(), params);
+      const Eigen::Vector4d x_before = f.x();
+      const Eigen::Matrix4d P_before = f.P();
+      THEN("reset is refused and x() and P() are as before") {
+        CHECK(f.reset(x0, P0) == Status::kNotPositiveDefinite);
+        CHECK(f.x() == x_before);
+        CHECK(f.P() == P_before);
+      }
+    }
+    WHEN("it is not (paper 001's scoring of the estimate)") {
+      kestrel::CrpfParams<double> params;
+      params.seed = 3;
+      params.refuse_indefinite = false;
+      Crpf<64> f(motion, middle_radar(), params);
+      THEN("reset takes the cloud") {
+        CHECK(f.reset(x0, P0) == Status::kOk);
+        CHECK(f.x()(1) == 10.0);
+      }
+    }
+  }
 }

@@ -54,6 +54,7 @@
 #include "kestrel/math/cholesky_update.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/math/finite.hpp"
+#include "kestrel/math/positive_definite.hpp"
 #include "kestrel/math/prng.hpp"
 #include "kestrel/models/concepts.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
@@ -69,6 +70,12 @@ struct CrpfParams {
   S delta = S(1);              ///< PMF offset, normalised-cost units (> 0).
   S kick_sigma = S(2);         ///< sj, sigma of the acceleration kick, m/s^2 (models with noise_gain()).
   std::uint64_t seed = 0;      ///< PRNG seed.
+  /// Refuse a reset, predict or update whose cloud covariance (what P()
+  /// hands a tracker to gate with and report) is not positive definite in
+  /// this scalar. A cloud selected down to a few ancestors and kicked in a
+  /// subspace (CV-2D's G a) is singular, so paper 001's evaluation, which
+  /// scores the estimate alone, turns this off (MC-001).
+  bool refuse_indefinite = true;
 };
 
 /// A motion model that says how a unit noise input enters the state.
@@ -143,33 +150,45 @@ class Crpf {
   }
 
   /// Draw the initial cloud x_i ~ N(x, P) with zero costs.
-  /// @return kOk; kNonFinite; kNotPositiveDefinite (P indefinite). Unchanged on error.
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (P indefinite, or the
+  ///         drawn cloud's covariance not positive definite). Unchanged on error.
   [[nodiscard]] Status reset(const State& x, const Cov& P) {
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     Cov L;
     const Status st = cholesky_semidefinite<Scalar, kStateDim>(symmetrised(P), L);
     if (st != Status::kOk) return st;
+    const NormalGenerator<Scalar> normal_before = normal_;
     State* next = xs_[1 - cur_];
     for (int i = 0; i < kParticles; ++i) {
       State w;
       for (int k = 0; k < kStateDim; ++k) w(k) = normal_();
       next[i] = x + L * w;
+      cum_[i] = Scalar(1) / Scalar(kParticles);
+    }
+    State x_hat;
+    Cov P_cloud;
+    moments(next, cum_, KickFactor::Zero(), x_hat, P_cloud);
+    if (const Status cloud = cloud_status(x_hat, P_cloud); cloud != Status::kOk) {
+      normal_ = normal_before;
+      return cloud;
     }
     cur_ = 1 - cur_;
     for (int i = 0; i < kParticles; ++i) {
       cost_[cost_cur_][i] = Scalar(0);
-      w_[i] = Scalar(1) / Scalar(kParticles);
+      w_[i] = cum_[i];
     }
     pending_dt_ = Scalar(0);
     predicted_ = false;
-    estimate(xs_[cur_], KickFactor::Zero());
+    x_hat_ = x_hat;
+    P_ = P_cloud;
     return Status::kOk;
   }
 
   /// Noise-free prediction of every particle over dt seconds (accumulated
   /// with any earlier predict() not yet followed by an update()); x() and
   /// P() become the predicted cloud's mean and covariance plus the kick's.
-  /// @return kOk; kNonFinite (filter unchanged).
+  /// @return kOk; kNonFinite; kNotPositiveDefinite (that covariance is not
+  ///         positive definite in this scalar). x() and P() unchanged on error.
   [[nodiscard]] Status predict(Scalar dt) {
     if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
     const Scalar total_dt = pending_dt_ + dt;
@@ -177,9 +196,19 @@ class Crpf {
     if (!all_finite(L)) return Status::kNonFinite;
     const State* x = xs_[cur_];
     for (int i = 0; i < kParticles; ++i) xp_[i] = motion_.propagate(x[i], total_dt);
+    State x_hat;
+    Cov P;
+    moments(xp_, w_, L, x_hat, P);
+    const Status st = cloud_status(x_hat, P);
+    if (st != Status::kOk) {
+      // xp_ is scratch: the next update predicts again from the cloud.
+      predicted_ = false;
+      return st;
+    }
+    x_hat_ = x_hat;
+    P_ = P;
     pending_dt_ = total_dt;
     predicted_ = true;
-    estimate(xp_, L);
     return Status::kOk;
   }
 
@@ -287,9 +316,16 @@ class Crpf {
     State x_hat;
     Cov P;
     moments(next, cum_, KickFactor::Zero(), x_hat, P);
-    if (!T::is_finite(min_cost) || !T::is_finite(wsum) || !all_finite(x_hat) || !all_finite(P)) {
+    if (!T::is_finite(min_cost) || !T::is_finite(wsum)) {
       normal_ = normal_before;
       return fail(Status::kNonFinite);
+    }
+    // The cloud's covariance is what the tracker gates with and reports: a
+    // cloud too narrow for it to be positive definite in this scalar is
+    // refused like an EKF update that would lose positive definiteness.
+    if (const Status st = cloud_status(x_hat, P); st != Status::kOk) {
+      normal_ = normal_before;
+      return fail(st);
     }
     for (int i = 0; i < kParticles; ++i) w_[i] = cum_[i];
     x_hat_ = x_hat;
@@ -376,8 +412,12 @@ class Crpf {
     m = ref + s1;
   }
 
-  /// x_hat_, P_ from cloud x with the current weights w_.
-  void estimate(const State* x, const KickFactor& L) { moments(x, w_, L, x_hat_, P_); }
+  /// state_status of the cloud's moments, or finiteness alone when the
+  /// params do not ask for positive definiteness.
+  Status cloud_status(const State& m, const Cov& P) const {
+    if (params_.refuse_indefinite) return state_status(m, P);
+    return all_finite(m) && all_finite(P) ? Status::kOk : Status::kNonFinite;
+  }
 
   Status fail(Status s) {
     diag_.status = s;
