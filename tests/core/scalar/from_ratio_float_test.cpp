@@ -3,6 +3,7 @@
 // double on a single-precision FPU) and must give, bit for bit, the float
 // that the double route float(double(num) / double(den)) gives: the route it
 // replaced, which the double traits still take.
+#include <bit>
 #include <catch2/catch.hpp>
 #include <cstdint>
 #include <cstring>
@@ -38,10 +39,14 @@ int count_differences(Gen&& next, int n) {
 
 }  // namespace
 
-// A few at compile time: the function is constexpr, as the double one.
-static_assert(kestrel::ScalarTraits<float>::from_ratio(1500, 1000) == 1.5f);
-static_assert(kestrel::ScalarTraits<float>::from_ratio(-1073741824, 2147483648LL) == -0.5f);
-static_assert(kestrel::ScalarTraits<float>::from_ratio(3000000000LL, 1000) == 3000000.0f);
+// A few at compile time (the function is constexpr, as the double one),
+// compared as bits.
+static_assert(std::bit_cast<std::uint32_t>(kestrel::ScalarTraits<float>::from_ratio(1500, 1000)) ==
+              std::bit_cast<std::uint32_t>(1.5f));
+static_assert(std::bit_cast<std::uint32_t>(kestrel::ScalarTraits<float>::from_ratio(-1073741824, 2147483648LL)) ==
+              std::bit_cast<std::uint32_t>(-0.5f));
+static_assert(std::bit_cast<std::uint32_t>(kestrel::ScalarTraits<float>::from_ratio(3000000000LL, 1000)) ==
+              std::bit_cast<std::uint32_t>(3000000.0f));
 
 SCENARIO("float from_ratio equals the double route bit for bit") {
   std::mt19937_64 g(29);
