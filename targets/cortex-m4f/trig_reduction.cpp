@@ -8,9 +8,9 @@
 // libm's member with the large-argument code (were it pulled for another
 // symbol, the link would fail with a duplicate definition, not go quiet). Up to 2^7 pi/2 this is the same Cody-Waite reduction, step
 // for step and with the same fused multiply-adds as the newlib build that
-// ships with arm-none-eabi-gcc 12.2 (so sinf and cosf return the same bits;
-// tests/targets/trig_reduction_test.cpp checks every float up to pi and a
-// sample up to 2^7 pi/2 against newlib's own). Beyond it, y[0] and y[1]
+// ships with arm-none-eabi-gcc 12.2 (so sinf and cosf return the same
+// bits; tests/targets/trig_reduction/trig_reduction_test.cpp checks every
+// float up to pi and a sample up to 2^7 pi/2 against newlib's own). Beyond it, y[0] and y[1]
 // are NaN: sinf and cosf then return NaN, which the filters turn into
 // kNonFinite, instead of a wrong value.
 #include "trig_reduction.hpp"
