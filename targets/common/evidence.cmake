@@ -66,6 +66,10 @@ endfunction()
 #     [LABEL <name>]                defaults to the image's output name
 #     TEXT_BUDGET <bytes> DATA_BUDGET <bytes> BSS_BUDGET <bytes>
 #     [STACK_BUDGET <bytes>]        worst chain from Tracker<...>::step
+#     [MAIN_STACK_BUDGET <bytes>]   worst main stack of a Cortex-M image: the
+#                                   reset chain plus one exception entry and
+#                                   chain per handler of the vector table
+#                                   (stack_report.py, "Main stack")
 #     [FRAME_BUDGET <bytes>]        -Wstack-usage=<bytes> on every unit of
 #                                   the image and of CI_TARGETS: one frame
 #                                   over it is a compile error (-Werror of
@@ -81,7 +85,7 @@ endfunction()
 # Outputs in <build>/evidence/: <label>.size.txt/.json, <label>.stack.txt/.json.
 function(kestrel_board_evidence image)
   cmake_parse_arguments(PARSE_ARGV 1 ev "NO_SYMBOL_CHECK"
-    "BOARD;LABEL;TEXT_BUDGET;DATA_BUDGET;BSS_BUDGET;STACK_BUDGET;FRAME_BUDGET" "CI_TARGETS;ROOTS")
+    "BOARD;LABEL;TEXT_BUDGET;DATA_BUDGET;BSS_BUDGET;STACK_BUDGET;MAIN_STACK_BUDGET;FRAME_BUDGET" "CI_TARGETS;ROOTS")
   foreach(req BOARD TEXT_BUDGET DATA_BUDGET BSS_BUDGET)
     if(NOT DEFINED ev_${req})
       message(FATAL_ERROR "kestrel_board_evidence(${image}): ${req} is required")
@@ -132,6 +136,9 @@ function(kestrel_board_evidence image)
     foreach(r IN LISTS ev_ROOTS)
       list(APPEND stack_args --root ${r})
     endforeach()
+    if(DEFINED ev_MAIN_STACK_BUDGET)
+      list(APPEND stack_args --main-budget ${ev_MAIN_STACK_BUDGET})
+    endif()
     list(APPEND stack_args --budget ${ev_STACK_BUDGET} --label ${ev_LABEL}
          --out ${dir}/${stem}.stack.txt --json ${dir}/${stem}.stack.json)
     list(APPEND cmds COMMAND Python3::Interpreter ${KESTREL_BOARD_COMMON_DIR}/stack_report.py ${stack_args} --reject)

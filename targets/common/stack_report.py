@@ -14,6 +14,32 @@ Inputs:
     of the prologue, callees = jal/jalr/call targets, tail calls = j/jr/tail
     to another function.
 
+Roots: the functions matched by --root (default: step, firmware_main, the
+static constructors) and, on a Cortex-M image, every handler of its vector
+table (g_vector_table: read from the ELF, so SysTick_Handler, the fault
+handlers and any IRQ are roots whether or not their names match a pattern,
+and a weak alias such as SysTick_Handler -> Default_Handler is followed to
+the function it resolves to).
+
+Calls: the .ci edges of a function plus the direct calls (bl/b.w, jal/j)
+of its machine code in the ELF, so a call made from inline assembly (the
+M0+ Reset_Handler's "bl kestrel_m0plus_start") is followed, and its frame
+is the larger of the .ci frame and the prologue parse (a naked function
+has no .ci frame). An indirect call in Kestrel's own code is taken to reach
+every function of .preinit_array/.init_array (the start-up's constructor
+loop is the only one; each function with an indirect call is listed in the
+notes so this stays visible).
+
+Main stack (Cortex-M): the thread-mode chain from the reset vector plus,
+for every distinct handler function of the vector table, one exception
+entry on top of it and the handler's own chain. Each exception is active
+at most once, so this bounds any nesting whatever the priorities. The
+exception entry is computed by rule from the ELF's build attributes
+(readelf -A): the 8-word basic frame (32 bytes), or the 26-word extended
+frame (104 bytes) when the image uses the FPU (Tag_FP_arch; ARMv7-M
+B1.5.7), plus 4 bytes of alignment padding (CCR.STKALIGN, 8-byte aligned
+frames). --main-budget N fails the script when that total exceeds N.
+
 For each root the script walks every call path (Kestrel's own functions
 must not recurse: that is an error, as SPEC section 1 forbids it; a C
 library routine that calls itself is counted one extra level deep, with a
@@ -32,7 +58,8 @@ failure repeats on the next build, as the size and symbol checks do).
 Usage (each board wires it as a post-link step and a <image>-stack-report target):
   stack_report.py --elf kestrel-m4f.elf --objdump arm-none-eabi-objdump \
                   --ci-dir <object dir> [--ci-dir ...] [--root REGEX ...] [--out stack.txt]
-                  [--budget BYTES [--budget-root REGEX]] [--json stack.json] [--reject]
+                  [--budget BYTES [--budget-root REGEX]] [--main-budget BYTES]
+                  [--json stack.json] [--reject]
 """
 
 import argparse
@@ -190,6 +217,72 @@ def load_elf(objdump, elf):
     return frames, calls, indirect
 
 
+def sibling_tool(objdump, name):
+    """arm-none-eabi-objdump -> arm-none-eabi-<name> (same directory and prefix)."""
+    return re.sub(r"objdump$", name, objdump)
+
+
+def run(cmd):
+    try:
+        return subprocess.run(cmd, capture_output=True, text=True, check=True).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return ""
+
+
+def function_symbols(objdump, elf):
+    """address -> names of the function symbols there (aliases share one), and size by name."""
+    by_addr, sizes = {}, {}
+    for line in run([sibling_tool(objdump, "nm"), "-S", elf]).splitlines():
+        parts = line.split()
+        if len(parts) == 4:
+            addr, size, kind, name = parts
+            sizes[name] = (int(addr, 16), int(size, 16))
+        elif len(parts) == 3:
+            addr, kind, name = parts
+        else:
+            continue
+        if kind in "TtWw":
+            by_addr.setdefault(int(addr, 16) & ~1, []).append(name)
+    return by_addr, sizes
+
+
+def read_words(objdump, elf, start, size):
+    """The 32-bit little-endian words of the image at [start, start + size)."""
+    dump = run([objdump, "-s", "--start-address=0x%x" % start, "--stop-address=0x%x" % (start + size), elf])
+    data = bytearray()
+    for line in dump.splitlines():
+        m = re.match(r"^ ([0-9a-f]+) ((?:[0-9a-f]{2,8} ?){1,4})", line)
+        if m:
+            data += bytes.fromhex(m.group(2).replace(" ", ""))
+    return [int.from_bytes(data[i:i + 4], "little") for i in range(0, len(data) - 3, 4)]
+
+
+def section_words(objdump, elf, names):
+    words = []
+    for line in run([objdump, "-h", elf]).splitlines():
+        parts = line.split()
+        if len(parts) >= 4 and parts[1] in names:
+            size, vma = int(parts[2], 16), int(parts[3], 16)
+            if size:
+                words += read_words(objdump, elf, vma, size)
+    return words
+
+
+def exception_entry_bytes(objdump, elf):
+    """Bytes one exception entry pushes on a Cortex-M, by rule from the build
+    attributes: 8 words, or 26 with the FPU's extended frame, + 4 alignment."""
+    attrs = run([sibling_tool(objdump, "readelf"), "-A", elf])
+    fpu = re.search(r"Tag_FP_arch:\s*(\S+)", attrs)
+    uses_fpu = bool(fpu) and fpu.group(1) not in ("No",)
+    arch = re.search(r"Tag_CPU_arch:\s*(\S+)", attrs)
+    frame = 104 if uses_fpu else 32
+    rule = ("%s, %s: %s frame %d bytes + 4 bytes alignment padding"
+            % (arch.group(1) if arch else "?", "FPU" if uses_fpu else "no FPU",
+               "extended (26 words: R0-R3, R12, LR, PC, xPSR, S0-S15, FPSCR, reserved)" if uses_fpu
+               else "basic (8 words: R0-R3, R12, LR, PC, xPSR)", frame))
+    return frame + 4, rule
+
+
 def short(name):
     """Drop template arguments and parameter lists: 'a::B<...>::f(int)' -> 'a::B<>::f'."""
     prev = None
@@ -229,12 +322,35 @@ def main():
     ap.add_argument("--label", default="", help="row name for the JSON (e.g. the image name)")
     ap.add_argument("--budget", type=int, help="bytes the worst chain from --budget-root may use")
     ap.add_argument("--budget-root", default=STEP_ROOT, help="regex of the budgeted root(s)")
+    ap.add_argument("--main-budget", type=int,
+                    help="bytes the worst main stack (thread chain + every handler's entry and chain) may use")
     ap.add_argument("--reject", action="store_true",
                     help="rename the ELF to <elf>.rejected when the budget is exceeded")
     args = ap.parse_args()
 
     nodes, edges = load_ci(args.ci_dir)
     elf_frames, elf_calls, elf_indirect = load_elf(args.objdump, args.elf)
+    by_addr, sym_sizes = function_symbols(args.objdump, args.elf)
+
+    def function_at(addr, prefer=()):
+        names = by_addr.get(addr & ~1, [])
+        for n in names:  # the name the call graphs use, if any
+            if n in prefer:
+                return n
+        return sorted(names, key=lambda n: (n not in elf_frames, n))[0] if names else None
+
+    ci_symbols = {symbol_of(t) for t in nodes}
+    init_functions = [f for f in (function_at(w, ci_symbols) for w in
+                                  section_words(args.objdump, args.elf, (".preinit_array", ".init_array")))
+                      if f]
+    # Cortex-M: every handler of the vector table (word 0 is the initial SP, word 1 the reset vector).
+    vectors = []
+    if "g_vector_table" in sym_sizes:
+        addr, size = sym_sizes["g_vector_table"]
+        for i, w in enumerate(read_words(args.objdump, args.elf, addr, size)[1:], start=1):
+            f = function_at(w, ci_symbols) if w else None
+            if f:
+                vectors.append((i, f, sorted(by_addr.get(w & ~1, []))))
 
     # A bare (external) name resolves to the defined .ci node of that symbol.
     by_symbol = {}
@@ -274,11 +390,19 @@ def main():
         kind, name = key
         if kind == "ci":
             frame, qual = nodes[name]
+            sym = symbol_of(name)
             if "dynamic" in qual:
-                notes.add(f"dynamic stack (alloca/VLA) in {symbol_of(name)}: {qual}")
-            callees = [resolve(t) for t in edges.get(name, ())]
-            if any(symbol_of(t) == "__indirect_call" for t in edges.get(name, ())):
-                notes.add(f"indirect call in {symbol_of(name)} (not followed)")
+                notes.add(f"dynamic stack (alloca/VLA) in {sym}: {qual}")
+            if elf_frames.get(sym, 0) > frame:  # e.g. a naked function: the machine code's push counts
+                frame, qual = elf_frames[sym], "prologue"
+            # .ci edges, plus the direct calls of the machine code (inline asm included).
+            callees = [resolve(t) for t in edges.get(name, ())] + [resolve(t) for t in elf_calls.get(sym, ())]
+            if any(symbol_of(t) == "__indirect_call" for t in edges.get(name, ())) or sym in elf_indirect:
+                if init_functions:
+                    notes.add(f"indirect call in {sym}: taken to reach every .init_array/.preinit_array function")
+                    callees += [resolve(f) for f in init_functions]
+                else:
+                    notes.add(f"indirect call in {sym} (not followed)")
         else:
             if name not in elf_frames:
                 notes.add(f"{name}: not in the image (inlined or discarded), counted as 0")
@@ -306,6 +430,10 @@ def main():
     names = demangle(all_symbols, args.cxxfilt)
 
     roots = list(args.root or DEFAULT_ROOTS)
+    for _i, f, _aliases in vectors:  # every handler is a root, named or not
+        pattern = "^" + re.escape(names.get(f, f)) + "$"
+        if pattern not in roots and not any(re.search(r, names.get(f, f)) for r in roots):
+            roots.append(pattern)
     if args.budget is not None and args.budget_root not in roots:
         roots.insert(0, args.budget_root)
     lines = []
@@ -324,6 +452,31 @@ def main():
                 lines.append(f"    {frame:5d}  {short(names.get(fn, fn))}  [{qual}]")
             lines.append("")
 
+    main_stack = None
+    if vectors:
+        entry, rule = exception_entry_bytes(args.objdump, args.elf)
+        reset = next(f for i, f, _a in vectors if i == 1)
+        thread = worst(resolve(reset))[0]
+        handlers = []
+        for f in sorted({f for i, f, _a in vectors if i != 1}):
+            count = sum(1 for _i, g, _a in vectors if g == f)
+            aliases = sorted({a for _i, g, al in vectors if g == f for a in al if a != f})
+            chain = worst(resolve(f))[0]
+            handlers.append({"handler": short(names.get(f, f)), "vectors": count, "aliases": aliases,
+                             "chain": chain, "entry": entry, "bytes": entry + chain})
+        total = thread + sum(h["bytes"] for h in handlers)
+        main_stack = {"bytes": total, "thread_root": short(names.get(reset, reset)), "thread": thread,
+                      "exception_entry": entry, "rule": rule, "handlers": handlers}
+        lines.append(f"{total:6d} bytes  worst main stack: the thread chain from {short(names.get(reset, reset))} "
+                     f"({thread}) + one exception entry and chain per distinct handler")
+        lines.append(f"    exception entry {entry} bytes: {rule}")
+        for h in handlers:
+            alias = (" = " + ", ".join(h["aliases"][:6]) + (", ..." if len(h["aliases"]) > 6 else "")) \
+                if h["aliases"] else ""
+            lines.append(f"    {h['bytes']:5d}  {h['handler']} ({h['vectors']} vectors{alias}): "
+                         f"entry {h['entry']} + chain {h['chain']}")
+        lines.append("")
+
     verdict = None
     budgeted = [r for r in results if r[0] == args.budget_root]
     worst_budgeted = max((r[2] for r in budgeted), default=None)
@@ -338,6 +491,18 @@ def main():
                        f"(budget {args.budget})")
         lines.append(verdict)
         lines.append("")
+    if args.main_budget is not None:
+        if main_stack is None:
+            main_verdict = "FAIL: --main-budget given but the image has no vector table (g_vector_table)"
+        elif main_stack["bytes"] > args.main_budget:
+            main_verdict = (f"FAIL: the worst main stack needs {main_stack['bytes']} bytes, "
+                            f"over its budget of {args.main_budget} bytes")
+        else:
+            main_verdict = f"OK: the worst main stack needs {main_stack['bytes']} bytes (budget {args.main_budget})"
+        lines.append(main_verdict)
+        lines.append("")
+        if main_verdict.startswith("FAIL") and not (verdict and verdict.startswith("FAIL")):
+            verdict = main_verdict
     if notes:
         lines.append("Notes:")
         lines.extend(f"  - {n}" for n in sorted(notes))
@@ -351,6 +516,8 @@ def main():
             "label": args.label or os.path.basename(args.elf),
             "step_bytes": worst_budgeted,
             "budget": args.budget,
+            "main_stack": main_stack,
+            "main_budget": args.main_budget,
             "max_frame": max(((f, symbol_of(t)) for t, (f, _q) in nodes.items()), default=(0, ""))[0],
             "roots": [{"root": r[1], "bytes": r[2],
                        "chain": [{"function": short(names.get(fn, fn)), "frame": fr, "kind": q}

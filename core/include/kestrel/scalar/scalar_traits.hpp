@@ -7,6 +7,7 @@
 // template parameter.
 #pragma once
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -58,7 +59,86 @@ struct FloatingScalarTraits {
 template <>
 struct ScalarTraits<double> : detail::FloatingScalarTraits<double> {};
 template <>
-struct ScalarTraits<float> : detail::FloatingScalarTraits<float> {};
+struct ScalarTraits<float> : detail::FloatingScalarTraits<float> {
+  /// num / den rounded once to float, in float and integer arithmetic only
+  /// (an FPU without double precision does no soft double here). For |num|
+  /// and |den| up to 2^53 the result is the same float, bit for bit, as
+  /// float(double(num) / double(den)) (what the double-precision traits
+  /// compute): a quotient of two exact doubles rounded to double and then to
+  /// float is rounded correctly, since 53 >= 2 * 24 + 2 (Figueroa, "When is
+  /// double rounding innocuous?", 1995). Beyond 2^53 this one is the exact one.
+  static constexpr float from_ratio(std::int64_t num, std::int64_t den) { return ratio_to_float(num, den); }
+
+  static constexpr float ratio_to_float(std::int64_t num, std::int64_t den) {
+    constexpr std::int64_t kExact = std::int64_t{1} << 24;  // integers a float holds exactly
+    if (num > -kExact && num < kExact && den > 0 && den <= kExact) {
+      // Both exact in float: one correctly rounded IEEE division.
+      return static_cast<float>(static_cast<std::int32_t>(num)) / static_cast<float>(static_cast<std::int32_t>(den));
+    }
+    if (den > 0 && (den & (den - 1)) == 0 && num >= std::numeric_limits<std::int32_t>::min() &&
+        num <= std::numeric_limits<std::int32_t>::max()) {
+      // A power-of-two denominator (e.g. 2^31 for a binary angle): round num
+      // once to float, then scale by 2^-k, which is exact at these exponents.
+      const int k = std::countr_zero(static_cast<std::uint64_t>(den));
+      const float scale = std::bit_cast<float>(static_cast<std::uint32_t>(127 - k) << 23);
+      return static_cast<float>(static_cast<std::int32_t>(num)) * scale;
+    }
+    return ratio_to_float_slow(num, den);
+  }
+
+ private:
+  /// Correctly rounded num / den by long division: the integer quotient,
+  /// then fraction bits until 27 significant bits are known, the remainder
+  /// as sticky bit, round to nearest even. Every loop has a constant bound.
+  static constexpr float ratio_to_float_slow(std::int64_t num, std::int64_t den) {
+    const bool neg = (num < 0) != (den < 0);
+    const std::uint64_t a = num < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(num) : static_cast<std::uint64_t>(num);
+    const std::uint64_t b = den < 0 ? std::uint64_t{0} - static_cast<std::uint64_t>(den) : static_cast<std::uint64_t>(den);
+    const std::uint32_t sign = neg ? 0x80000000u : 0u;
+    if (b == 0) {  // as the double division: +-inf, or NaN for 0 / 0
+      return a == 0 ? std::numeric_limits<float>::quiet_NaN() : std::bit_cast<float>(sign | 0x7F800000u);
+    }
+    if (a == 0) return std::bit_cast<float>(sign);  // 0 / -d is -0, as in double
+    std::uint64_t q = 0;
+    std::uint64_t r = 0;
+    if (a <= 0xFFFFFFFFu && b <= 0xFFFFFFFFu) {  // one 32-bit divide (UDIV on ARMv7-M)
+      q = static_cast<std::uint32_t>(a) / static_cast<std::uint32_t>(b);
+      r = static_cast<std::uint32_t>(a) % static_cast<std::uint32_t>(b);
+    } else {  // 64-bit operands: shift-subtract, one bit of a per step (r < b <= 2^63)
+      for (int i = 63; i >= 0; --i) {
+        r = (r << 1) | ((a >> i) & 1u);
+        q <<= 1;
+        if (r >= b) {
+          r -= b;
+          q |= 1u;
+        }
+      }
+    }
+    int exp2 = 0;  // value = (q + r / b) * 2^exp2
+    for (int i = 0; i < 96 && q < (std::uint64_t{1} << 26); ++i) {
+      r <<= 1;
+      q <<= 1;
+      if (r >= b) {
+        r -= b;
+        q |= 1u;
+      }
+      --exp2;
+    }
+    const int shift = (64 - std::countl_zero(q)) - 24;  // >= 3: q has 27 or more bits
+    std::uint64_t mant = q >> shift;
+    const std::uint64_t rest = q & ((std::uint64_t{1} << shift) - 1u);
+    const std::uint64_t half = std::uint64_t{1} << (shift - 1);
+    if (rest > half || (rest == half && (r != 0 || (mant & 1u) != 0))) ++mant;
+    int e = exp2 + shift;
+    if (mant == (std::uint64_t{1} << 24)) {
+      mant >>= 1;
+      ++e;
+    }
+    // mant in [2^23, 2^24): biased exponent e + 23 + 127, between 41 and 190 here.
+    return std::bit_cast<float>(sign | (static_cast<std::uint32_t>(e + 150) << 23) |
+                                (static_cast<std::uint32_t>(mant) & 0x7FFFFFu));
+  }
+};
 
 /// Shorthand for a double constant in scalar S; evaluated at compile time for
 /// floating types (the fixed-point type makes it constexpr too).

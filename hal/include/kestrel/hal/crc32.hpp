@@ -2,8 +2,10 @@
 // CRC-32 as in IEEE 802.3 and zlib's crc32(): reflected polynomial
 // 0xEDB88320, initial value 0xFFFFFFFF, final xor 0xFFFFFFFF; check value
 // crc32("123456789") = 0xCBF43926. It protects header and payload of a wire
-// frame (frame_format.hpp). Table-driven, one byte per step, 1 KiB table in
-// read-only memory, built at compile time.
+// frame (frame_format.hpp). Table-driven and built at compile time: one
+// byte per step with a 1 KiB table, or, where a board defines
+// KESTREL_HAL_CRC32_NIBBLE for its hal build, four bits per step with a
+// 64-byte table (same CRC).
 #pragma once
 
 #include <cstdint>
