@@ -7,6 +7,7 @@
 #include "filters/ekf_ca.hpp"
 #include "filters/ekf_ca_fixed.hpp"
 #include "filters/ekf_ca_rr.hpp"
+#include "filters/imm_filters.hpp"
 #include "filters/r2aekf_filters.hpp"
 
 namespace kestrel::sim {
@@ -32,6 +33,9 @@ const FilterEntry kFilters[] = {
      &r2aekf_paper_setup, &run_r2aekf_paper},
     {"r2aekf-f32", "R2-AEKF default mode in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &r2aekf_f32_setup,
      &run_r2aekf_f32},
+    {"imm", "IMM of CV-2D, CA-2D and CT-2D EKFs, polar radar, reported as CA-2D; double (docs/imm.md)",
+     hal::FrameKind::kRadar, &imm_setup, &run_imm},
+    {"imm-f32", "the same IMM in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &imm_f32_setup, &run_imm_f32},
 };
 }  // namespace
 

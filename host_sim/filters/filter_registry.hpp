@@ -27,6 +27,9 @@ struct FilterOptions {
   /// as the papers score filters (SPEC 9 single target, no clutter); a
   /// gate there only turns filter lag into a dropped and restarted track.
   std::optional<double> confirmed_gate_d2;
+  /// Parameter overrides of the IMM filters, KEY=VALUE each
+  /// (filters/imm_filters.hpp lists the keys); other filters ignore them.
+  std::vector<std::string> imm;
 };
 
 /// The parameters a run actually used, for summary.json and the table.
