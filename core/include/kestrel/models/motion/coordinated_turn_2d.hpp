@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // Coordinated-turn motion in the plane with the turn rate in the state
 // (CT-2D, the manoeuvre model of the IMM; Bar-Shalom, Li, Kirubarajan 2001,
-// section 11.7.1-11.7.2). State X = [x vx y vy w]^T, w the turn rate in
+// section 11.7, the coordinated-turn model with unknown turn rate). State X = [x vx y vy w]^T, w the turn rate in
 // rad/s (counter-clockwise positive). Over a step T with a = w T the speed
 // is constant and the velocity turns by a:
 //   x+  = x + s1 vx - c1 vy        vx+ = cos(a) vx - sin(a) vy
 //   y+  = y + c1 vx + s1 vy        vy+ = sin(a) vx + cos(a) vy
 //   w+  = w
-// with s1 = sin(a)/w and c1 = (1 - cos(a))/w (eq. 11.7.1-4). Both, and their
+// with s1 = sin(a)/w and c1 = (1 - cos(a))/w. Both, and their
 // derivatives in w (the Jacobian's last column), are 0/0 at w = 0: below
 // |a| = kSeriesLimit they come from their Taylor series in a, so w -> 0 is
 // exactly constant velocity, with no division by w and no cancellation.
@@ -110,7 +110,8 @@ struct CoordinatedTurn2D {
     return out;
   }
 
-  /// d propagate / dX (Bar-Shalom, Li, Kirubarajan 2001, eq. 11.7.2-4).
+  /// d propagate / dX: the transition above differentiated, with the
+  /// series coefficients near w = 0.
   Cov jacobian(const State& x, S dt) const {
     const TurnCoefficients c = coefficients(x(Layout::kW), dt);
     const S vx = x(Layout::kVx);
