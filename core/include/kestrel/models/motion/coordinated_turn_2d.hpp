@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Coordinated-turn motion in the plane with the turn rate in the state
 // (CT-2D, the manoeuvre model of the IMM; Bar-Shalom, Li, Kirubarajan 2001,
-// section 11.7, the coordinated-turn model with unknown turn rate). State X = [x vx y vy w]^T, w the turn rate in
-// rad/s (counter-clockwise positive). Over a step T with a = w T the speed
-// is constant and the velocity turns by a:
+// section 11.7, the coordinated turn with unknown turn rate). State
+// X = [x vx y vy w]^T, w the turn rate in rad/s (counter-clockwise
+// positive). Over a step T with a = w T the speed is constant and the
+// velocity turns by a:
 //   x+  = x + s1 vx - c1 vy        vx+ = cos(a) vx - sin(a) vy
 //   y+  = y + c1 vx + s1 vy        vy+ = sin(a) vx + cos(a) vy
 //   w+  = w
