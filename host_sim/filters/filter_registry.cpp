@@ -9,6 +9,7 @@
 #include "filters/ekf_ca.hpp"
 #include "filters/ekf_ca_fixed.hpp"
 #include "filters/ekf_ca_rr.hpp"
+#include "filters/imm_filters.hpp"
 #include "filters/r2aekf_filters.hpp"
 #include "filters/radar_filter_family.hpp"
 
@@ -29,6 +30,9 @@ const FilterEntry kFilters[] = {
      hal::FrameKind::kRadar, &ekf_ca_rr_setup, &run_ekf_ca_rr},
     {"ekf-ca-rr-f32", "the same EKF-CA with range rate in float", hal::FrameKind::kRadar, &ekf_ca_rr_f32_setup,
      &run_ekf_ca_rr_f32},
+    {"imm", "IMM of CV-2D, CA-2D and CT-2D EKFs, polar radar, reported as CA-2D; double (docs/imm.md)",
+     hal::FrameKind::kRadar, &imm_setup, &run_imm},
+    {"imm-f32", "the same IMM in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &imm_f32_setup, &run_imm_f32},
     {"r2aekf", "R2-AEKF default mode (SPEC 5 corrections) on EKF-CA; double", hal::FrameKind::kRadar, &r2aekf_setup,
      &run_r2aekf},
     {"r2aekf-paper", "R2-AEKF paper mode (paper 000 eqs. 7-18 as printed); double", hal::FrameKind::kRadar,

@@ -33,6 +33,9 @@ struct FilterOptions {
   /// at all. `replay` sets it: recorded data has outliers, and an ungated
   /// track follows them.
   bool board_gate = false;
+  /// Parameter overrides of the IMM filters, KEY=VALUE each
+  /// (filters/imm_filters.hpp lists the keys); other filters ignore them.
+  std::vector<std::string> imm;
 };
 
 /// TrackerConfig::gate_confirmed_threshold for these options: the d2

@@ -7,16 +7,20 @@
 // frame 2 and held by one track to the end, through S1's weave and axial
 // burst and S2's turns and jerk bursts, in double and in float, with a
 // position error at most 1.5 times the EKF's in the same run.
+// The IMM (CV/CA/CT, kestrel/filters/imm_radar.hpp) runs with its own
+// defaults, not the single-model qj.
 // S1 comes from the integer generator of the fixed-point golden hash
 // (tests/core/scalar/s1_integer_scenario.hpp), S2 from kestrel-sim's
 // scenario registry; both runs of one filter share its Tracker type.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <vector>
 
 #include "core/scalar/s1_integer_scenario.hpp"
 #include "kestrel/filters/crpf.hpp"
+#include "kestrel/filters/imm_radar.hpp"
 #include "kestrel/filters/sigma_point_filter.hpp"
 #include "kestrel/filters/sr_sigma_point_filter.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
@@ -29,6 +33,20 @@ using kestrel::Status;
 
 template <class M, class H>
 using Crpf100 = kestrel::Crpf<M, H, 100>;
+
+/// The radar IMM in the scalar of M (it brings its own models).
+template <class M, class H>
+using RadarImm = kestrel::RadarImm<typename M::Scalar>;
+
+/// F from the single-model parameters, or the IMM with its defaults.
+template <class F, class Motion, class Radar>
+F make_filter(const Motion& motion, const Radar& radar) {
+  if constexpr (std::is_same_v<F, kestrel::RadarImm<typename Motion::Scalar>>) {
+    return kestrel::make_radar_imm<typename Motion::Scalar>(kestrel::RadarImmParams{});
+  } else {
+    return F(motion, radar);
+  }
+}
 
 /// One scenario run as a board sees it: wire frames and the truth position.
 struct WireRun {
@@ -93,7 +111,7 @@ TrackedRun track_with(const WireRun& run) {
   Radar radar;
   radar.sigma_range_m = s.sigma_range_m;
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
-  Tracker tracker(F(motion, radar), {radar, s.max_speed_mps, s.init_accel_sigma_mps2},
+  Tracker tracker(make_filter<F>(motion, radar), {radar, s.max_speed_mps, s.init_accel_sigma_mps2},
                   kestrel::radar_tracker_config<S>(p, s));
 
   TrackedRun out;
@@ -153,6 +171,9 @@ TEMPLATE_TEST_CASE("Scenario: the UKF holds S1 and S2 inside the tracker", "[tra
 }
 TEMPLATE_TEST_CASE("Scenario: the CDKF holds S1 and S2 inside the tracker", "[tracker][filters]", double, float) {
   check_holds_s1_and_s2<kestrel::Cdkf, TestType>("CDKF");
+}
+TEMPLATE_TEST_CASE("Scenario: the IMM holds S1 and S2 inside the tracker", "[tracker][filters][imm]", double, float) {
+  check_holds_s1_and_s2<RadarImm, TestType>("IMM");
 }
 // In float the square-root forms hold only if sqrt(R) keeps its bearing
 // channel: 2.7e-5 rad^2 is below 32 eps * 9 m^2, so a zero-pivot tolerance
