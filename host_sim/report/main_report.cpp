@@ -57,7 +57,8 @@ void figures(std::ostream& out, const std::vector<std::filesystem::path>& files)
 void radar_section(std::ostream& out, const MainReport& r) {
   out << "## Paper 000: adaptive EKF on manoeuvring radar targets (S1, S2)\n\n"
       << "Park et al., \"An Adaptive Extended Kalman Filter Incorporating Noise Adaptation and Maneuver "
-         "Awareness\". EKF-CA at the paper's qj 1.6 m^2/s^5, EKF-CA with a tuned qj, and R2-AEKF, each "
+         "Awareness\". EKF-CA at the paper's qj 1.6 m^2/s^5, EKF-CA with a tuned qj, R2-AEKF and Kestrel's IMM "
+         "(CV/CA/CT, docs/imm.md), each "
       << r.runs << " seeded runs from seed " << r.seed
       << ", scored ungated as the paper scores filters (docs/host_sim.md, \"Metrics\"; docs/r2aekf.md).\n\n"
       << "| scenario | filter | runs | RMSE m [95 % CI] | peak m | position NEES | NIS | runs without loss | "

@@ -36,6 +36,7 @@ elseif(CHECK STREQUAL "suite_report")
       "\\| s1 \\| EKF-CA \\(double\\), qj 1.6 \\| 2 \\|"
       "\\| s2 \\| EKF-CA \\(double\\), qj 160 \\| 2 \\|"
       "\\| s2 \\| R2-AEKF default mode"
+      "\\| s1 \\| IMM CV/CA/CT \\(double\\)"
       "## Paper 001: .*\\| 0.01 \\| 0.1 \\| 0.01 \\|"
       "## Paper 002: .*2 runs of pcl002"
       "## Paper 003: .*2 runs of uw003")
