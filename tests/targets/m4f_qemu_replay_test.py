@@ -24,7 +24,7 @@ is sized for the link rate (board_config.hpp), while QEMU would otherwise
 deliver bytes as fast as the emulated USART takes them. At the full link
 rate a 44-byte frame arrives every 3.8 ms of host time, and QEMU's speed is
 the host's, not the board's: on this 2-core CI host the emulated image fell
-behind and overflowed the ring in 2 of 4 runs (316 and 375 of 383 records),
+behind and overflowed the ring in 2 of 3 runs (316 and 375 of 383 records),
 with nothing else running. A quarter of the rate still delivers frames 130
 times faster than the sensor's 0.5 s period. QEMU does not model
 the STM32's clock tree or flash interface, so the image runs on its HSI
