@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // ScalarTraits<S>: the few operations core needs beyond + - * /, chosen at
 // compile time per scalar type (SPEC section 2). double and float map to
-// <cmath>; the fixed-point Q type (kestrel/scalar/fixed_point.hpp) brings its
+// <cmath>, except atan2, which is Kestrel's own (math/atan2.hpp); the fixed-point Q type (kestrel/scalar/fixed_point.hpp) brings its
 // own specialisation with integer-only implementations. Every model and
 // filter calls these, never std:: math directly, so the scalar is a true
 // template parameter.
@@ -11,6 +11,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+
+#include "kestrel/math/atan2.hpp"
 
 namespace kestrel {
 
@@ -31,7 +33,9 @@ struct FloatingScalarTraits {
   static bool is_finite(F v) { return std::isfinite(v); }
   static F sqrt(F v) { return std::sqrt(v); }
   static F hypot(F a, F b) { return std::hypot(a, b); }
-  static F atan2(F y, F x) { return std::atan2(y, x); }
+  /// The same bits on every IEEE platform (no libm atan2: glibc and newlib
+  /// differ in the last bit, so a board and the host would not agree).
+  static F atan2(F y, F x) { return deterministic_atan2(y, x); }
   static F sin(F v) { return std::sin(v); }
   static F cos(F v) { return std::cos(v); }
   static F abs(F v) { return std::fabs(v); }

@@ -314,7 +314,7 @@ class Tracker {
     bool (&used_)[kMaxMeasurements];
     bool (&hit_)[kMaxTracks];
     bool (&drop_)[kMaxTracks];
-    std::size_t slot_[kMaxTracks] = {};
+    std::size_t slot_[kMaxTracks];  // [0, count_) written before it is read
     std::size_t count_ = 0;
   };
 

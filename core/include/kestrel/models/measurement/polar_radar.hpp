@@ -95,13 +95,8 @@ struct PolarRadar {
   }
 
   /// residual(z, predict(x)) for a particle filter's per-particle cost and
-  /// risk (the CRPF, paper 001 eqs. 5-6; kestrel/filters/crpf.hpp). Floating
-  /// point: the bearing comes from deterministic_atan2 (math/atan2.hpp),
-  /// within 1 ulp of predict()'s std::atan2 on the tested grid, the same
-  /// bits on every IEEE platform and about half the cost; the range and the
-  /// wrap are predict()'s and residual()'s. Fixed point: exactly
-  /// residual(z, predict(x)). The other filters keep predict(), so their
-  /// results (and the golden files) do not move.
+  /// risk (the CRPF, paper 001 eqs. 5-6; kestrel/filters/crpf.hpp), the same
+  /// bits as that expression in every scalar, without building z_hat.
   Measurement particle_residual(const Measurement& z, const State& x) const {
     using T = ScalarTraits<Scalar>;
     if constexpr (T::kIsFixedPoint) {
