@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# One command for the firmware evidence of every board (issue 7):
+# One command for the firmware evidence of every board (docs/footprint.md):
 #
 #   targets/evidence.sh [--host-instructions] [board ...]
 #
@@ -15,7 +15,7 @@
 # build/<board>/evidence/*.json (targets/common/footprint_table.py).
 #
 # --host-instructions also builds host-release's kestrel-instr-count and
-# runs the instruction-count budget check of host_sim/bench (issue 9:
+# runs the instruction-count budget check of host_sim/bench (docs/performance.md:
 # callgrind instructions per step and path class, failing over budget by
 # more than 2 %), and puts its table into docs/footprint.md as well.
 set -euo pipefail

@@ -2,7 +2,7 @@
 // What kestrel-bench times and kestrel-instr-count counts, defined once:
 //   - the filter cases: every filter x scalar x form (dense / structured)
 //     on the CA-2D + polar radar models, built with the S1 sensor and the
-//     tuned EKF-CA of SPEC 5 (bench_params());
+//     tuned EKF-CA of docs/r2aekf.md (bench_params());
 //   - the filter inputs: two-point initiation from S1 frames 0 and 1, then
 //     predict + update on every later frame;
 //   - the tracker path classes of the host board's radar tracker
@@ -123,7 +123,7 @@ void for_each_filter_case(Visitor&& visit) {
 }
 
 /// Model parameters of every case: the S1 sensor and the tuned EKF-CA of
-/// SPEC 5 (qj = 160 m^2/s^5), which holds S1's weave inside the 99.9 % gate
+/// docs/r2aekf.md (qj = 160 m^2/s^5), which holds S1's weave inside the 99.9 % gate
 /// (paper 000's qj = 1.6 loses it every half period, which would turn the
 /// "normal" path into a drop-and-restart cycle). Counts do not depend on qj.
 inline RadarTrackerParams bench_params() {

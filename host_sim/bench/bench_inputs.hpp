@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Inputs shared by the timing benchmarks (bench.cpp, kestrel-bench) and the
 // instruction-count harness (instr_count.cpp, kestrel-instr-count): the S1
-// frames (SPEC section 9, fixed noise seed) and a full-capacity frame
+// frames (docs/scenarios.md, fixed noise seed) and a full-capacity frame
 // sequence, as plain SI records. Both programs measure exactly the same
 // steps, so a ns figure and an instruction count of one path describe the
 // same work.

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""Instruction-count budgets of the core's step paths (issue 9).
+"""Instruction-count budgets of the core's step paths (docs/performance.md).
 
 Runs kestrel-instr-count under valgrind --tool=callgrind, which dumps the
 instructions of each measured path (collection is on only around the

@@ -39,13 +39,13 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kDeg = kPi / 180.0;
 constexpr double kT = 1.0;
 
-/// The middle values every filter but the oracle is tuned with (SPEC 9).
+/// The middle values every filter but the oracle is tuned with (docs/scenarios.md).
 constexpr Cell kTuning{0.1, 1.0, 0.1};
 
 constexpr std::array<std::string_view, kFilters> kNames = {"EKF",      "UKF",      "CDKF",     "SR-UKF",    "SR-CDKF",
                                                            "CRPF-100", "CRPF-300", "CRPF-500", "EKF-oracle"};
 
-/// Initial estimate spread, SPEC 9: P0 = diag(50^2, 5^2, 50^2, 5^2).
+/// Initial estimate spread, docs/scenarios.md: P0 = diag(50^2, 5^2, 50^2, 5^2).
 const State kP0Sigma(50.0, 5.0, 50.0, 5.0);
 
 struct RunData {
@@ -69,7 +69,7 @@ RunData generate(const Cell& c, std::uint64_t run) {
     const double ay = c.accel_sigma_mps2 * g();
     const State& p = d.truth[static_cast<std::size_t>(k - 1)];
     State& x = d.truth[static_cast<std::size_t>(k)];
-    // DWNA: the acceleration is held over the step (SPEC 3, CV-2D).
+    // DWNA: the acceleration is held over the step (docs/models.md, CV-2D).
     x(0) = p(0) + p(1) * kT + 0.5 * ax * kT * kT;
     x(1) = p(1) + ax * kT;
     x(2) = p(2) + p(3) * kT + 0.5 * ay * kT * kT;
@@ -131,7 +131,7 @@ Record run_filter(F& f, const RunData& d) {
 
 template <int kN>
 Record run_crpf(std::size_t cell, std::uint64_t run, std::size_t filter, const RunData& d) {
-  CrpfParams<double> params;  // SPEC 5 defaults: lambda 0.8, beta 2, delta 1, kick 2 m/s^2
+  CrpfParams<double> params;  // defaults of docs/filters.md: lambda 0.8, beta 2, delta 1, kick 2 m/s^2
   params.seed = crpf_seed(cell, run, filter);
   params.refuse_indefinite = false;  // scored on the estimate alone, as paper 001 does
   auto f = std::make_unique<Crpf<Motion, Radar, kN>>(motion_for(kTuning), radar_for(kTuning), params);

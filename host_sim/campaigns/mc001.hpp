@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// MC-001 (SPEC section 9; paper 001 section 4): the 3 x 3 grid of bearing
+// MC-001 (docs/scenarios.md; paper 001 section 4): the 3 x 3 grid of bearing
 // and range noise, 100 steps of a CV-2D target seen by a polar radar at the
 // origin, every filter of paper 001 (EKF, UKF, CDKF, SR-UKF, SR-CDKF, CRPF
 // N = 100/300/500) tuned with the middle values, plus an EKF tuned to each
@@ -11,7 +11,7 @@
 // which the tracker's two-point initiation cannot reproduce.
 //
 // Determinism. Run r of every cell draws its data from the core's
-// NormalGenerator seeded with r (SPEC: seeds 0..2999; the cells share the
+// NormalGenerator seeded with r (docs/scenarios.md: seeds 0..2999; the cells share the
 // draws, scaled by their sigmas); CRPF f of run r in cell c is seeded with a
 // SplitMix64 hash of (c, r, f). A run depends on nothing else, so its record
 // is the same whatever thread computes it or which shard it falls in; the
@@ -31,14 +31,14 @@
 namespace kestrel::sim::mc001 {
 
 inline constexpr int kSteps = 100;           ///< Measurements k = 1..100, T = 1 s.
-inline constexpr double kDivergedM = 100.0;  ///< SPEC 9: final error over 100 m.
+inline constexpr double kDivergedM = 100.0;  ///< docs/scenarios.md: final error over 100 m.
 inline constexpr std::size_t kCells = 9;
 
 /// One cell of the grid: the true noise of the data.
 struct Cell {
   double bearing_sigma_deg;  ///< sb, degrees.
   double range_sigma_m;      ///< sr, metres.
-  double accel_sigma_mps2;   ///< sa of the truth, tied to the range level (SPEC 9).
+  double accel_sigma_mps2;   ///< sa of the truth, tied to the range level (docs/scenarios.md).
 };
 
 /// The grid, bearing-major: cells 0-2 have sb = 0.01 deg, 3-5 0.1 deg, 6-8 1 deg;

@@ -40,7 +40,7 @@ void finish(const std::filesystem::path& dir, const mc001::Records& records, boo
 void add_montecarlo_commands(CLI::App& app, MonteCarloOptions& o, MergeOptions& m, CLI::App*& mc_cmd,
                              CLI::App*& merge_cmd) {
   mc_cmd = app.add_subcommand("montecarlo", "Monte Carlo campaign over a grid of cells and filters (mc001)");
-  mc_cmd->add_option("--campaign", o.campaign, "Campaign (mc001: paper 001's noise grid, SPEC 9)")
+  mc_cmd->add_option("--campaign", o.campaign, "Campaign (mc001: paper 001's noise grid, docs/scenarios.md)")
       ->capture_default_str();
   mc_cmd->add_option("--runs,-n", o.runs, "Runs per cell (seeds 0..runs-1)")->capture_default_str();
   mc_cmd->add_option("--jobs,--threads,-j", o.threads, "Worker threads (default: every core; results do not depend on it)");

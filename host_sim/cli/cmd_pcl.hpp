@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim pcl`: Monte Carlo runs of the passive-radar scenarios
-// (pcl002, pcl002-hard; SPEC section 9) with the ready-made PCL tracker,
+// (pcl002, pcl002-hard; docs/scenarios.md) with the ready-made PCL tracker,
 // scored with the PCL metrics (association accuracy, coverage after
 // confirmation, false confirmed tracks, Rb/dRb RMSE, time to confirmation).
 // PCL frames, states and metrics differ from the radar ones, so this is its

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim replay`: run a filter over recorded data, a wire stream file,
-// a radar plot CSV (SPEC section 11) or an ASTERIX CAT048 recording, through
+// a radar plot CSV (docs/host_sim.md) or an ASTERIX CAT048 recording, through
 // the same board loop as the simulation. With a truth CSV the run is scored
 // like a scenario run; with --asterix-out its reports are also CAT062.
 #include <algorithm>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The scalar choice of kestrel-sim (issue 8, docs/fixed-point.md):
+// The scalar choice of kestrel-sim (docs/fixed-point.md):
 //   - `--scalar double|float|q31_32|q23_40` on run, replay and timing picks
 //     the registry entry of the chosen filter built on that scalar
 //     ("ekf-ca" + q31_32 -> "ekf-ca-q31_32");

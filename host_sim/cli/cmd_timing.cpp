@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim timing`: per-step latency of the real-time loop on the host
-// (SPEC section 8). Runs one job at a time so runs do not compete for the
+// (docs/tracking.md). Runs one job at a time so runs do not compete for the
 // cores; every step of every run enters the distribution.
 #include <cstdio>
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim uw`: Monte Carlo runs of the underwater scenarios (uw003 and
-// its variants; SPEC section 9) with the underwater tracker, scored with the
+// its variants; docs/scenarios.md) with the underwater tracker, scored with the
 // UW metrics (3D / horizontal / depth RMSE, sound-speed error std, gated-out
 // arrivals against the true outliers). Sonar frames, the 7-state estimate
 // and these metrics differ from the radar ones, so this is its own

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A small reader for the plain-text CSV files of SPEC section 11: a header
+// A small reader for the plain-text CSV files of docs/host_sim.md: a header
 // row naming the columns, then one record per line, comma-separated, no
 // quoting (the files hold numbers). Columns are looked up by name, so their
 // order is free and unknown columns are ignored. Any malformed record

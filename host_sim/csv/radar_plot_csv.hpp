@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Radar plot CSV (SPEC section 11), the input of `kestrel-sim replay --csv`
+// Radar plot CSV (docs/host_sim.md), the input of `kestrel-sim replay --csv`
 // and a by-product of `generate`:
 //   time_s,range_m,bearing_rad[,range_rate_mps][,sensor_id]
 // Consecutive rows with the same time_s form one frame (rows are not

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Truth CSV (SPEC section 11): time_s,x_m,y_m[,vx_mps,vy_mps][,z_m], one
+// Truth CSV (docs/host_sim.md): time_s,x_m,y_m[,vx_mps,vy_mps][,z_m], one
 // row per frame time. Velocity columns are optional on input (NaN when
 // absent); z_m is accepted and ignored by the 2D scenarios.
 #pragma once

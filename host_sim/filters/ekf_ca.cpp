@@ -45,7 +45,7 @@ template host::BoardRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(cons
 template host::BoardRadarTracker<EkfCa<float>> make_ekf_ca_tracker<float>(const FilterOptions&);
 
 RadarTrackerParams ekf_ca_params(const FilterOptions& options) {
-  RadarTrackerParams p;  // SPEC section 9 sensor, paper 000's qj = 1.6
+  RadarTrackerParams p;  // S1/S2 sensor (docs/scenarios.md), paper 000's qj = 1.6
   if (options.qj.has_value()) p.qj = *options.qj;
   return p;
 }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Paper 000's EKF-CA on the host board (kestrel/tracking/radar_tracker.hpp):
 // double ("ekf-ca") and float ("ekf-ca-f32", the Cortex-M4F build's scalar).
-// Defaults are SPEC section 9: sr 3 m, sb 0.30 deg, qj 1.6 m^2/s^5; confirmed
+// Defaults are the S1/S2 sensor of docs/scenarios.md: sr 3 m, sb 0.30 deg, qj 1.6 m^2/s^5; confirmed
 // tracks ungated unless --gate-d2 is given (see FilterOptions).
 #pragma once
 

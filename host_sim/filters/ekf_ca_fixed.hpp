@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Paper 000's EKF-CA on the fixed-point scalars (issue 8, docs/fixed-point.md):
+// Paper 000's EKF-CA on the fixed-point scalars (docs/fixed-point.md):
 // "ekf-ca-q31_32" (the Cortex-M0+ board's tracker) and "ekf-ca-q23_40", with
 // the same sensor, initiation, management and options as "ekf-ca"
 // (filters/ekf_ca.hpp). The command line's doubles (--qj, --gate-d2) are

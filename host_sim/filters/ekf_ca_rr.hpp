@@ -3,7 +3,7 @@
 // (kestrel/tracking/radar_range_rate_tracker.hpp): double ("ekf-ca-rr") and
 // float ("ekf-ca-rr-f32"). It takes radar frames whose plots all carry a
 // range rate (scenarios s1rr, s2rr); hal::RadarAdapter refuses any other
-// radar frame with kWrongKind. Defaults: EKF-CA's (SPEC section 9 sensor,
+// radar frame with kWrongKind. Defaults: EKF-CA's (the S1/S2 sensor of docs/scenarios.md,
 // qj 1.6) plus srr 0.5 m/s, the rr scenarios' value (docs/range_rate.md);
 // confirmed tracks ungated unless --gate-d2 is given, as for EKF-CA.
 #pragma once

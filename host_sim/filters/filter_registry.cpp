@@ -33,7 +33,7 @@ const FilterEntry kFilters[] = {
     {"imm", "IMM of CV-2D, CA-2D and CT-2D EKFs, polar radar, reported as CA-2D; double (docs/imm.md)",
      hal::FrameKind::kRadar, &imm_setup, &run_imm},
     {"imm-f32", "the same IMM in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &imm_f32_setup, &run_imm_f32},
-    {"r2aekf", "R2-AEKF default mode (SPEC 5 corrections) on EKF-CA; double", hal::FrameKind::kRadar, &r2aekf_setup,
+    {"r2aekf", "R2-AEKF default mode (corrections of docs/r2aekf.md) on EKF-CA; double", hal::FrameKind::kRadar, &r2aekf_setup,
      &run_r2aekf},
     {"r2aekf-paper", "R2-AEKF paper mode (paper 000 eqs. 7-18 as printed); double", hal::FrameKind::kRadar,
      &r2aekf_paper_setup, &run_r2aekf_paper},

@@ -25,7 +25,7 @@ namespace kestrel::sim {
 struct FilterOptions {
   std::optional<double> qj;  ///< White-jerk PSD of CA models, m^2/s^5.
   /// Gate of confirmed tracks in d2 = nu^T S^-1 nu units. Unset: ungated,
-  /// as the papers score filters (SPEC 9 single target, no clutter); a
+  /// as the papers score filters (one target, no clutter: docs/scenarios.md); a
   /// gate there only turns filter lag into a dropped and restarted track.
   std::optional<double> confirmed_gate_d2;
   /// Without confirmed_gate_d2: gate confirmed tracks as a board does (the

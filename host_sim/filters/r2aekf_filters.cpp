@@ -15,7 +15,7 @@ namespace kestrel::sim {
 
 namespace {
 
-/// SPEC 9 sensor and paper 000's qj, with the command-line overrides.
+/// The S1/S2 sensor (docs/scenarios.md) and paper 000's qj, with the command-line overrides.
 RadarTrackerParams params_of(const FilterOptions& options) {
   RadarTrackerParams p;
   if (options.qj.has_value()) p.qj = *options.qj;

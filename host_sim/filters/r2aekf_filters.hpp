@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Paper 000's R2-AEKF (kestrel/filters/r2aekf.hpp) on the host board, for
-// kestrel-sim: "r2aekf" (default mode, SPEC 5 corrections), "r2aekf-paper"
+// kestrel-sim: "r2aekf" (default mode, the corrections of docs/r2aekf.md), "r2aekf-paper"
 // (the printed equations) and "r2aekf-f32" (default mode in float, the
 // Cortex-M4F scalar). Same sensor, initiation and management as "ekf-ca"
-// (filters/ekf_ca.hpp): SPEC 9 sensor, qj 1.6 (--qj overrides it, as the
+// (filters/ekf_ca.hpp): the S1/S2 sensor of docs/scenarios.md, qj 1.6 (--qj overrides it, as the
 // paper uses one qj for both filters), confirmed tracks ungated unless
 // --gate-d2 is given.
 //
@@ -48,7 +48,7 @@ FilterSetup r2aekf_setup_for(const FilterOptions& options, const R2AekfConfig<do
 /// it again while one runs (the runs only read it). Not in the registry.
 const FilterEntry& r2aekf_study_entry(const R2AekfConfig<double>& config);
 
-/// What the filter said about one update (SPEC 5 steps 2-7), as recorded
+/// What the filter said about one update (docs/r2aekf.md steps 2-7), as recorded
 /// by the logging run.
 struct ScaleSample {
   double time_s = 0.0;         ///< Frame time, s (filled by the join with the reports).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Monte Carlo figures (SPEC section 10): the mean over runs of a per-run
+// Monte Carlo figures (docs/metrics.md): the mean over runs of a per-run
 // figure with the 95 % confidence interval of that mean,
 // mean +- 1.96 sd / sqrt(n), sd the sample standard deviation (n - 1).
 // One run gives a zero-width interval (there is no spread to estimate).

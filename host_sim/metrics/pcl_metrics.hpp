@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// PCL-002 metrics (SPEC sections 9 and 10), per run and over Monte Carlo runs.
+// PCL-002 metrics (docs/scenarios.md and docs/metrics.md), per run and over Monte Carlo runs.
 //
 // Tolerance: a track estimate is "on the target" in a frame when
-// |Rb_hat - Rb| <= 50 m and |dRb_hat - dRb| <= 5 m/s (SPEC section 9).
+// |Rb_hat - Rb| <= 50 m and |dRb_hat - dRb| <= 5 m/s (docs/scenarios.md).
 // Target track: a confirmed track that is on the target in more than half of
 // the frames it was reported confirmed; every other confirmed track is a
 // false confirmed track ("never within that tolerance for most of its life").
@@ -20,7 +20,7 @@
 //    using the oldest one (lowest id) when there are several;
 //  - time to first confirmation = time of that first frame (the drone is
 //    present from t = 0; with 5-of-6 and 0.5 s frames the minimum is 2 s).
-// Per-run figures are averaged over runs with a 95 % interval (SPEC 10);
+// Per-run figures are averaged over runs with a 95 % interval (docs/metrics.md);
 // accuracy and coverage are also given pooled (total hits / total frames).
 #pragma once
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Per-run figures of SPEC section 10, computed from a sequence of per-step
+// Per-run figures of docs/metrics.md, computed from a sequence of per-step
 // errors. Kept free of tracker types so tests can feed hand-made sequences.
 //
 //  - RMSE: sqrt(mean e_k^2) over steps that have an estimate; peak: max e_k.

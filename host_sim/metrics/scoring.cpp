@@ -32,7 +32,7 @@ std::vector<ScoredStep> score_run(const StreamRunResult& run, const std::vector<
   std::vector<ScoredStep> steps;
   for (std::size_t k = 0; k < run.frames.size(); ++k) {
     const FrameOutcome& f = run.frames[k];
-    // A frame the tracker refused has no reports by design (SPEC section 8):
+    // A frame the tracker refused has no reports by design (docs/tracking.md):
     // it is counted in the status table, not scored.
     const bool tracked = f.status == Status::kOk || f.status == Status::kTooManyCandidates;
     if (k < config.first_scored_step || !f.stepped || !tracked) continue;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Scoring a run against truth, frame by frame (SPEC section 10).
+// Scoring a run against truth, frame by frame (docs/metrics.md).
 //
 // Which estimate is scored: at each frame, the confirmed track nearest to
 // the truth (with one target and no clutter there is at most one). Frames

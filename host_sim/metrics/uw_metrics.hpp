@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// UW-003 metrics (SPEC sections 9 and 10), per run and over Monte Carlo runs.
+// UW-003 metrics (docs/scenarios.md and docs/metrics.md), per run and over Monte Carlo runs.
 //
 // Scored frames: every frame after the one that initialised the track (the
 // fix frame itself is not scored; it is frame 0 unless the first fix
@@ -10,8 +10,8 @@
 //    the scored frames;
 //  - the gate against the truth: true outliers, those gated out (or rejected
 //    by the fix), good arrivals gated out, outliers fused.
-// Over runs: the mean of each per-run figure with its 95 % interval (SPEC
-// 10); the sound-speed error std also pooled over every scored frame of
+// Over runs: the mean of each per-run figure with its 95 % interval
+// (docs/metrics.md); the sound-speed error std also pooled over every scored frame of
 // every run; per-step RMSE curves sqrt(mean over runs of e_k^2).
 #pragma once
 

@@ -57,7 +57,7 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
     nis.push_back(r.metrics.nis);
     loss.push_back(r.metrics.track_loss_s);
     switches.push_back(static_cast<double>(r.track_switches));
-    // SPEC 10: recovery is averaged over the runs that had an episode.
+    // docs/metrics.md: recovery is averaged over the runs that had an episode.
     if (!r.metrics.episodes.empty()) recovery.push_back(r.metrics.recovery_s);
     else ++s.runs_without_loss;
     if (r.metrics.missing_steps > 0) ++s.runs_with_missing;

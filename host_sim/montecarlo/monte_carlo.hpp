@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Monte Carlo over seeds (SPEC section 10): run i uses seed base_seed + i.
+// Monte Carlo over seeds (docs/metrics.md): run i uses seed base_seed + i.
 // Runs are independent and each writes only its own slot, so the results
 // are identical whatever the number of worker threads; only the step times
 // change (several runs share the cores), which is why `timing` uses one job.

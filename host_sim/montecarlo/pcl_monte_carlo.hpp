@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Monte Carlo over seeds for the PCL scenarios (SPEC sections 9 and 10):
+// Monte Carlo over seeds for the PCL scenarios (docs/scenarios.md and docs/metrics.md):
 // run i uses seed base_seed + i for both the drone's manoeuvre and the
 // frames. Runs are independent and each writes only its own slot, so the
 // figures do not depend on the number of worker threads (step times do).

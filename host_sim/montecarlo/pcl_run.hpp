@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// One PCL run through the board loop (SPEC section 8): the scenario's wire
+// One PCL run through the board loop (docs/tracking.md): the scenario's wire
 // frames are encoded into a byte stream and driven exactly as a board drives
 // them, host::StreamFileFeed -> hal::PclAdapter (Doppler to range rate, the
 // over-capacity rule) -> Tracker::step (the ready-made PCL tracker of

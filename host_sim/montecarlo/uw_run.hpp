@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// One UW run through the board loop (SPEC section 8), and Monte Carlo over
+// One UW run through the board loop (docs/tracking.md), and Monte Carlo over
 // seeds. The scenario's sonar wire frames are encoded into a byte stream and
 // driven exactly as a board drives them: host::StreamFileFeed ->
 // hal::SonarAdapter (nanoseconds to seconds) -> UnderwaterTracker::step

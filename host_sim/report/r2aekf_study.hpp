@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The R2-AEKF reproduction study of paper 000 (issue 3, docs/r2aekf.md):
+// The R2-AEKF reproduction study of paper 000 (docs/r2aekf.md):
 // everything the results page needs, from one command
 // (`kestrel-sim r2aekf-study`):
 //   1. the tuned EKF-CA baseline: qj chosen once for all four scenarios

@@ -2,7 +2,7 @@
 // The files `run`, `replay` and `suite` write for one scenario and filter
 // into an output directory (names are prefixed with the filter so several
 // filters can share a scenario's directory):
-//   <filter>_tracks.csv  track CSV of run 0 (SPEC section 11, every report)
+//   <filter>_tracks.csv  track CSV of run 0 (docs/host_sim.md, every report)
 //   <filter>_steps.csv   per-step CSV of run 0 (csv/step_csv.hpp)
 //   <filter>_runs.csv    one row of figures per Monte Carlo run
 //   <filter>_xy.png, <filter>_error.png   plots of run 0 (plots/)

@@ -59,7 +59,7 @@ struct Sample {
   double x, y, z, vx, vy, vz;
 };
 
-/// One attempt at a trajectory; false if it left the SPEC box.
+/// One attempt at a trajectory; false if it left the scenario's box.
 bool simulate_drone(const PclScenarioConfig& c, std::uint64_t sub_seed, std::vector<Sample>& out) {
   Rng r(sub_seed);
   // Start well inside the annulus, north of the receiver.
@@ -175,7 +175,7 @@ PclScenarioRun generate_pcl(const PclScenarioConfig& c, std::uint64_t seed) {
   std::vector<Sample> samples;
   std::uint32_t attempt = 0;
   for (;; ++attempt) {
-    if (attempt >= kMaxTrajectoryAttempts) throw std::runtime_error("no PCL trajectory met the SPEC box");
+    if (attempt >= kMaxTrajectoryAttempts) throw std::runtime_error("no PCL trajectory met the scenario's box");
     if (simulate_drone(c, mix(mix(seed) + attempt), samples)) break;
   }
   run.trajectory_attempts = attempt + 1;

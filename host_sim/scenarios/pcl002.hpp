@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// PCL-002 (SPEC section 9, paper 002): a DTV passive radar (701 MHz) with the
+// PCL-002 (docs/scenarios.md, paper 002): a DTV passive radar (701 MHz) with the
 // receiver at the origin and the transmitter 8.5 km south, a drone
 // manoeuvring 300-900 m north of the receiver, and every 0.5 s a frame of
 // range-Doppler candidates: the drone's detection (Pd, sigma_Rb, sigma_fD),
@@ -7,12 +7,12 @@
 // candidates. The hard variant triples the clutter, lowers Pd to 0.7 and
 // gives the tracker 64 candidates per scan.
 //
-// Choices SPEC leaves open, fixed here (docs/pcl.md lists them):
+// Choices the paper leaves open, fixed here (docs/pcl.md lists them):
 //  - Truth is random per run ("a smooth random manoeuvre per run"): a start
 //    drawn in the allowed annulus, speed and heading driven by smooth random
 //    signals (three sinusoids each) within the acceleration limits, with a
 //    look-ahead steering term that keeps the drone in the annulus; a
-//    trajectory that still leaves the SPEC box (300-900 m, y > 0) is redrawn
+//    trajectory that still leaves the scenario's box (300-900 m, y > 0) is redrawn
 //    from the next sub-seed. Altitude is a slow sinusoid inside 50-120 m.
 //  - SNR carries no information: every candidate, target or clutter, gets
 //    SNR uniform in [12, 20] dB, and the candidates of a frame are shuffled,
@@ -48,7 +48,7 @@ struct PclScenarioConfig {
   int ridge_max = 3;                  ///< Ridge candidates per frame uniform on 0..ridge_max.
   double ridge_fd_max_hz = 1.0;       ///< Ridge |fD| below this, Hz.
   std::size_t scan_capacity = 32;     ///< Candidates per tracker scan.
-  // The drone (SPEC section 9).
+  // The drone (docs/scenarios.md).
   double r_min_m = 300.0, r_max_m = 900.0;       ///< Horizontal distance from the receiver, m.
   double alt_min_m = 50.0, alt_max_m = 120.0;    ///< Altitude, m.
   double speed_max_mps = 26.0;                   ///< Speed limit, m/s.
@@ -56,7 +56,7 @@ struct PclScenarioConfig {
   double along_accel_max_mps2 = 2.0;             ///< |a| along the track, m/s^2.
 };
 
-/// SPEC 9's PCL-002 and its hard variant.
+/// PCL-002 and its hard variant (docs/scenarios.md).
 PclScenarioConfig pcl002_config();
 PclScenarioConfig pcl002_hard_config();
 /// By name ("pcl002", "pcl002-hard", case-insensitive). Throws std::invalid_argument.
@@ -84,7 +84,7 @@ struct PclFrameRecord {
 struct PclScenarioRun {
   std::vector<PclTruth> truth;         ///< truth[k] at frames[k].
   std::vector<PclFrameRecord> frames;
-  std::uint32_t trajectory_attempts = 0;  ///< Sub-seeds drawn until the trajectory met the SPEC box.
+  std::uint32_t trajectory_attempts = 0;  ///< Sub-seeds drawn until the trajectory met the scenario's box.
 };
 
 /// Truth and frames of the run with this seed (bit-reproducible).

@@ -11,7 +11,7 @@ namespace kestrel::sim {
 
 namespace {
 double wrap_pi(double a) {
-  // (-pi, pi], the convention of the core's residual() and of SPEC section 11.
+  // (-pi, pi], the convention of the core's residual() and of docs/host_sim.md.
   const double r = std::remainder(a, 2.0 * std::numbers::pi);
   return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A single target seen by the polar radar at the origin (SPEC section 4,
+// A single target seen by the polar radar at the origin (docs/models.md,
 // scenarios S1, S2, S1n, S2n): a truth trajectory sampled at the frame
 // times, plus range and bearing noise whose sigma may change over time
 // (the "n" variants), and optionally a range rate (x vx + y vy)/r with its
@@ -38,13 +38,13 @@ struct RadarNoise {
   double bearing_sigma_at(double t_s) const;
 };
 
-/// The S1/S2 sensor: sr = 3 m, sb = 0.30 deg (SPEC section 9).
+/// The S1/S2 sensor: sr = 3 m, sb = 0.30 deg (docs/scenarios.md).
 RadarNoise paper000_radar_noise();
 /// The S1n/S2n sensor: range sigma x3 for 60 <= t < 75 s, bearing sigma x3
 /// for 110 <= t < 120 s (the filters are not told).
 RadarNoise paper000_varying_radar_noise();
 /// The S1rr/S2rr sensor: the S1/S2 sensor plus a range rate with sigma
-/// kRangeRateSigmaMps (SPEC fixes none; docs/range_rate.md).
+/// kRangeRateSigmaMps (no source paper fixes one; docs/range_rate.md).
 RadarNoise paper000_range_rate_radar_noise();
 /// srr of the rr variants, m/s: a pulse-Doppler radar's typical radial
 /// velocity accuracy (docs/range_rate.md).

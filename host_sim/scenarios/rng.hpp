@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The simulator's random numbers. Reproducible bit for bit (SPEC section 9)
+// The simulator's random numbers. Reproducible bit for bit (docs/scenarios.md)
 // on every standard library: std::mt19937_64's output sequence is fixed by
 // the C++ standard, but std::normal_distribution and
 // std::uniform_real_distribution are not (libstdc++ and libc++ differ), so

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// S1, zig-zag with an axial burst (SPEC section 9, paper 000), and S1n, the
+// S1, zig-zag with an axial burst (docs/scenarios.md, paper 000), and S1n, the
 // same with time-varying noise. Truth is analytic:
 //   x(t) = -15000 + s(t),  y(t) = 8000 + 300 sin(2 pi t / 15)  [m]
 // with s(t) the along-track distance at 200 m/s plus +5 m/s^2 for

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// S2, S-curve with slow-and-go and jerk bursts (SPEC section 9, paper 000),
+// S2, S-curve with slow-and-go and jerk bursts (docs/scenarios.md, paper 000),
 // S2n, the same with time-varying noise, and S2rr, with range rate. Truth is integrated at 1 ms in
 // position, heading and speed:
 //  - start (-8000, 12000) m, heading +x, 180 m/s;

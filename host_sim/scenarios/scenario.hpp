@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // What a scenario is: a named, seeded generator of truth and sensor frames
-// (SPEC section 9). Measurements are in SI units here; stream/ quantises
+// (docs/scenarios.md). Measurements are in SI units here; stream/ quantises
 // them to the wire units a real sensor front end would send.
 //
 // Truth is deterministic per scenario; the seed only drives sensor noise
@@ -55,7 +55,7 @@ struct ScenarioInfo {
   hal::FrameKind kind = hal::FrameKind::kRadar;
   double frame_period_s = 0.0; ///< T, s.
   std::size_t steps = 0;       ///< Frames per run.
-  double loss_threshold_m = 0.0;  ///< L of the track-loss metric (SPEC section 10), m.
+  double loss_threshold_m = 0.0;  ///< L of the track-loss metric (docs/metrics.md), m.
 };
 
 class Scenario {

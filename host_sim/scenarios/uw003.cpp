@@ -30,7 +30,7 @@ double path_length(const UwTruth& t, const std::array<double, 3>& b, hal::ToaPat
 UwScenarioConfig uw003_config() {
   UwScenarioConfig c;
   c.name = "uw003";
-  c.description = "UW-003: 4 surface beacons, seabed 150 m, direct + reflected TOA, 3 ms, 5 % outliers (SPEC 9)";
+  c.description = "UW-003: 4 surface beacons, seabed 150 m, direct + reflected TOA, 3 ms, 5 % outliers";
   return c;
 }
 

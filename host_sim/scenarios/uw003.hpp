@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// UW-003 (SPEC section 9, paper 003): four surface beacons at the corners of
+// UW-003 (docs/scenarios.md, paper 003): four surface beacons at the corners of
 // a 2 km square, a flat seabed at D = 150 m, a target starting at
 // (500, 800, 60) m with velocity (1.2, 1.0, -0.2) m/s plus white
 // acceleration of 0.05 m/s^2 per axis, T = 1 s, 50 frames. The sound speed
@@ -13,7 +13,7 @@
 // uw003-clean (no outliers), uw003-d100 (seabed at 100 m), uw003-1ms (TOA
 // noise 1 ms).
 //
-// Choices SPEC leaves open, fixed here (docs/underwater.md lists them):
+// Choices the paper leaves open, fixed here (docs/underwater.md lists them):
 //  - Motion per step: a ~ N(0, 0.05^2) per axis, p += v T + a T^2 / 2,
 //    v += a T (the discrete white-noise-acceleration model the filter uses).
 //    A target that would leave the water (depth outside [1, D - 1] m) is
@@ -58,7 +58,7 @@ struct UwScenarioConfig {
   double outlier_max_s = 50e-3;
 };
 
-/// SPEC 9's UW-003 and its variants.
+/// UW-003 and its variants (docs/scenarios.md).
 UwScenarioConfig uw003_config();
 /// By name: uw003, uw003-direct, uw003-clean, uw003-d100, uw003-1ms
 /// (case-insensitive). Throws std::invalid_argument.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Per-step latency of the real-time loop (SPEC section 8): the Runner times
+// Per-step latency of the real-time loop (docs/tracking.md): the Runner times
 // adapter conversion + Tracker::step of every frame with the board's cycle
 // clock (SteadyClock on the host: 1 cycle = 1 ns). Percentiles use the
 // nearest-rank definition (the value at rank ceil(p n) of the sorted

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# Firmware evidence shared by every board (issue 7, docs/footprint.md):
+# Firmware evidence shared by every board (docs/footprint.md):
 # the link-time heap guard, and the post-link size budget, forbidden-symbol
 # check and worst-case stack budget of an image. Included by each board's
 # CMakeLists.txt / image.cmake; not a board itself.

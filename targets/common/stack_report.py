@@ -41,7 +41,7 @@ B1.5.7), plus 4 bytes of alignment padding (CCR.STKALIGN, 8-byte aligned
 frames). --main-budget N fails the script when that total exceeds N.
 
 For each root the script walks every call path (Kestrel's own functions
-must not recurse: that is an error, as SPEC section 1 forbids it; a C
+must not recurse: that is an error, as docs/architecture.md forbids it; a C
 library routine that calls itself is counted one extra level deep, with a
 note) and prints
 the deepest one with the frame of each function on it. The sum is the stack
@@ -373,7 +373,7 @@ def main():
         if key in memo:
             return memo[key]
         if key in visiting:
-            if key[0] == "ci":  # Kestrel's own code: SPEC section 1 forbids recursion
+            if key[0] == "ci":  # Kestrel's own code: docs/architecture.md forbids recursion
                 raise SystemExit(f"stack_report: recursion through {key[1]}")
             # A C library routine that calls itself (glibc's
             # __ieee754_remainder rescales a huge divisor and recurses once):

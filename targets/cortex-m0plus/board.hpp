@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Cortex-M0+ board's choice of a concrete type for every HAL concept and
 // the tracker it runs: the EKF-CA radar tracker on the Q31.32 fixed-point
-// scalar (issue 8, docs/fixed-point.md), integer arithmetic only, so the
+// scalar (docs/fixed-point.md), integer arithmetic only, so the
 // image links no soft-float double routines and no libm (checked after each
 // link, CMakeLists.txt) and computes the same bits as a host replay:
 //

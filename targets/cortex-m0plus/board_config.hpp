@@ -3,8 +3,8 @@
 // Raspberry Pi Pico): clocks, the UART link, buffer sizes, tracker
 // capacities and the step budget.
 //
-// This is the float soft-float build that issue 7 allows until the
-// fixed-point scalar (issue 8) is wired into a board: the same float EKF-CA
+// This is the float soft-float build, kept for comparison with the
+// fixed-point scalar (docs/fixed-point.md): the same float EKF-CA
 // tracker as the Cortex-M4F, every float operation a libgcc routine.
 #pragma once
 
@@ -39,7 +39,7 @@ inline constexpr std::size_t kMaxTracks = 8;
 inline constexpr std::size_t kMaxPlots = 32;
 
 /// A convert+step longer than this counts as an overrun: 50 ms (10 % of
-/// the 0.5 s frame interval of SPEC section 9's radar scenarios; soft float
+/// the 0.5 s frame interval of docs/scenarios.md's radar scenarios; soft float
 /// on a 125 MHz M0+ is an order of magnitude slower than the M4F's FPU).
 inline constexpr std::uint64_t kStepBudgetCycles = kCoreClockHz / 20;
 

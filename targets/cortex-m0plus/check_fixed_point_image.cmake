@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# Post-link check of the fixed-point image (issue 8): cmake -DNM=<nm>
+# Post-link check of the fixed-point image (docs/fixed-point.md): cmake -DNM=<nm>
 #   -DELF=<image> -P check_fixed_point_image.cmake
 # The Q31.32 tracker is integer arithmetic only, so the image must hold no
 # double-precision soft-float routine (__aeabi_d*, __adddf3, conversions to

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Cortex-M0+ firmware's main (firmware_main, called by Reset_Handler in
 // startup.cpp): clocks to 125 MHz, SysTick cycle clock and UART0, then the
-// hal Runner forever (SPEC section 8). All large objects are statics, as on
+// hal Runner forever (docs/tracking.md). All large objects are statics, as on
 // the other boards; g_runner.stats() holds the same RunnerStats.
 #include "board.hpp"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Cortex-M4F board's choice of a concrete type for every HAL concept
-// (STYLE "Top-level layout": board.hpp binds each concept), and the tracker
+// (docs/porting.md: board.hpp binds each concept), and the tracker
 // this board runs. Everything is resolved at compile time; the runner calls
 // these types directly, with no virtual dispatch.
 //

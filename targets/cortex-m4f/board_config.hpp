@@ -37,7 +37,7 @@ inline constexpr std::size_t kMaxTracks = 8;
 inline constexpr std::size_t kMaxPlots = 32;
 
 /// A convert+step longer than this counts as an overrun: 10 ms, 2 % of the
-/// 0.5 s frame interval of SPEC section 9's radar scenarios, leaving the rest
+/// 0.5 s frame interval of docs/scenarios.md's radar scenarios, leaving the rest
 /// of the frame for the link and for a second sensor. It is a cycle count:
 /// on the HSI fallback (16 MHz) the same work takes 105 ms, still a fifth of
 /// the frame interval, and an overrun still means the step did more work.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Cortex-M4F firmware's main (firmware_main, called by Reset_Handler in
 // startup.cpp): bring up clocks (or stay on the HSI, see system.hpp), cycle counter and UART, then run the hal
-// Runner forever, one poll_once() per iteration (SPEC section 8). All large objects (tracker, feed with its frame assembler,
+// Runner forever, one poll_once() per iteration (docs/tracking.md). All large objects (tracker, feed with its frame assembler,
 // runner with its frame and scan) are namespace-scope statics, so the stack
 // holds only the call chain of one step; their constructors run from
 // .init_array in Reset_Handler. The runner's statistics (min/max/last

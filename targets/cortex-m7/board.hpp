@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Cortex-M7 board's choice of a concrete type for every HAL concept
-// (STYLE "Top-level layout": board.hpp binds each concept), and the sensor
+// (docs/porting.md: board.hpp binds each concept), and the sensor
 // chain (adapter + tracker) this board runs. Everything is resolved at
 // compile time; the runner calls these types directly, with no virtual
 // dispatch.
@@ -10,7 +10,7 @@
 //   TrackSink       -> UartTxSink    (KTRK v2 records -> USART3 TX ring), or,
 //                      with KESTREL_BOARD_SINK_CAT062 (kestrel-m7-cat062.elf),
 //                      UartCat062Sink (one ASTERIX CAT062 block per report)
-//   Adapter/Tracker, by sensor kind (issue 15), in double (FPv5-D16 does
+//   Adapter/Tracker, by sensor kind, in double (FPv5-D16 does
 //   double in hardware):
 //     radar (kestrel-m7.elf, the default)
 //                   -> RadarAdapter + EKF-CA radar tracker, kMaxTracks x kMaxPlots

@@ -63,7 +63,7 @@ inline constexpr std::size_t kPclMaxTracks = 128;
 inline constexpr std::size_t kPclMaxCandidates = 32;
 
 /// A convert+step longer than this counts as an overrun: 10 ms (as on the
-/// M4F board), 2 % of the 0.5 s frame interval of SPEC section 9's radar
+/// M4F board), 2 % of the 0.5 s frame interval of docs/scenarios.md's radar
 /// scenarios.
 inline constexpr std::uint64_t kStepBudgetCycles = kCoreClockHz / 100;
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The Cortex-M7 firmware's main (firmware_main, called by Reset_Handler in
 // startup.cpp): caches on, clocks to 400 MHz, cycle counter and UART, then
-// the hal Runner forever, one poll_once() per iteration (SPEC section 8).
+// the hal Runner forever, one poll_once() per iteration (docs/tracking.md).
 // All large objects (tracker, feed with its frame assembler, runner with its
 // frame and scan) are namespace-scope statics in DTCM, so the stack holds
 // only the call chain of one step; their constructors run from .init_array

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The riscv64-linux board's choice of a concrete type for every HAL concept
-// (STYLE "Top-level layout": board.hpp binds each concept), and the tracker
+// (docs/porting.md: board.hpp binds each concept), and the tracker
 // it runs. Everything is resolved at compile time: no virtual dispatch.
 //
 //   MeasurementFeed -> FdFeed      (read(2) of a file, pipe or serial device

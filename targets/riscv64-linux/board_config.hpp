@@ -26,8 +26,8 @@ inline constexpr std::size_t kAssemblerBytes = hal::wire::kMaxFrameBytes;
 inline constexpr std::size_t kSinkRecords = kMaxTracks;
 
 /// A convert+step longer than this counts as an overrun: 10 ms (as on the
-/// microcontroller boards), 2 % of the 0.5 s frame interval of SPEC
-/// section 9's radar scenarios. Converted to clock ticks at start-up.
+/// microcontroller boards), 2 % of the 0.5 s frame interval of
+/// docs/scenarios.md's radar scenarios. Converted to clock ticks at start-up.
 inline constexpr std::uint64_t kStepBudgetNs = 10'000'000;
 
 }  // namespace kestrel::rv64

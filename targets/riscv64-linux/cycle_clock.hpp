@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// CycleClocks of the riscv64-linux board (SPEC section 8: rdcycle/mcycle on
+// CycleClocks of the riscv64-linux board (docs/tracking.md: rdcycle/mcycle on
 // RISC-V). Which one the board uses is chosen when configuring:
 //   -DKESTREL_RV64_CYCLE_CLOCK=monotonic (default) | rdtime | rdcycle
 //

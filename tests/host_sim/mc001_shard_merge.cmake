@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# MC-001 sharding (issue 4): the table of a single run equals, byte for byte,
+# MC-001 sharding (docs/filters.md): the table of a single run equals, byte for byte,
 # the table merged from shards run with another thread count; merge refuses
 # an incomplete set of shards. Run by CTest as
 #   cmake -DSIM=<kestrel-sim> -DOUT=<dir> -P mc001_shard_merge.cmake

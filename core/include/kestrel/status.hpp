@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Status codes and a small Result<T>: how every fallible call in core and hal
-// reports failure without exceptions (STYLE "Errors without exceptions").
+// reports failure without exceptions (docs/tracking.md, the real-time loop).
 // A status is a value the caller must look at ([[nodiscard]]); feed data never
 // asserts. to_string() is for host logs and costs only a switch on a board.
 #pragma once

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// GNN (SPEC section 6): the Hungarian solver against brute-force enumeration
+// GNN (docs/tracking.md): the Hungarian solver against brute-force enumeration
 // of every partial assignment on small random matrices (with forbidden
 // pairs and misses), a case where greedy nearest neighbour is not optimal,
 // bad inputs, and zero allocations.

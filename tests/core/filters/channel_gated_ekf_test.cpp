@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Channel-gated EKF (SPEC sections 5-6, paper 003 section 3.3.3): with every
+// Channel-gated EKF (docs/filters.md and docs/tracking.md, paper 003 section 3.3.3): with every
 // channel it is the EKF; with a subset it equals a reduced-dimension update
 // (a removed channel is removed, not zeroed); the per-channel gate drops an
 // injected outlier and keeps the good channels; predict-only when every

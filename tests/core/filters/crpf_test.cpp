@@ -30,7 +30,7 @@ namespace {
 
 constexpr double kDeg = kestrel::test::kPi / 180.0;
 
-/// The filters of MC-001 are tuned with the middle values (SPEC 9).
+/// The filters of MC-001 are tuned with the middle values (docs/scenarios.md).
 Radar middle_radar() {
   Radar r;
   r.sigma_range_m = 1.0;
@@ -96,7 +96,7 @@ SCENARIO("the CRPF tracks MC-001's middle cell", "[crpf][mc001]") {
     const double mse = mse_sum / runs;
     INFO("mean position MSE " << mse << " m^2, diverged " << diverged << ", worst final error " << worst_final
                               << " m");
-    THEN("no run diverges (SPEC 9: final error over 100 m) and the MSE stays within the bound") {
+    THEN("no run diverges (final error over 100 m) and the MSE stays within the bound") {
       // Measured: MSE 18.3 m^2, worst final error 9.7 m (docs/filters.md).
       // Bounds at about twice that; the MSE is dominated by the first steps
       // (acquiring from a 50 m / 5 m/s prior with 100 particles), the final
@@ -168,7 +168,7 @@ SCENARIO("selection concentrates the cloud on the particles of least risk", "[cr
     for (int i = 0; i < 200; ++i) before.push_back(f.particle(i));
     const double tx = 1100.0, ty = 950.0;
     const Crpf<200>::MeasVec z(std::hypot(tx, ty), std::atan2(ty, tx));
-    // Risk of each old particle (costs are 0 after reset): SPEC 5's dC.
+    // Risk of each old particle (costs are 0 after reset): docs/filters.md's dC.
     const auto risk = [&](const Eigen::Vector4d& p) {
       const auto nu = radar.residual(z, radar.predict(p));
       return std::pow(nu(0) / radar.sigma_range_m, 2) + std::pow(nu(1) / radar.sigma_bearing_rad, 2);

@@ -2,7 +2,7 @@
 // R2-AEKF (kestrel/filters/r2aekf.hpp), stage by stage. Most tests drive the
 // filter with "controlled" measurements: z = h(x_pred) + (er sqrt(S_rr),
 // eb sqrt(S_bb)) with S the innovation covariance the next update starts
-// from, so the per-channel normalised innovation e of SPEC 5 step 2 is
+// from, so the per-channel normalised innovation e of docs/r2aekf.md step 2 is
 // exactly (er, eb) whatever the filter's state. Each test states what
 // would break it.
 #include <catch2/catch.hpp>
@@ -22,8 +22,8 @@ using kestrel::R2AekfMode;
 using kestrel::R2AekfQForm;
 using kestrel::Status;
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kSigmaRange = 3.0;                 // m (SPEC 9)
-constexpr double kSigmaBearing = 0.3 * kPi / 180.0;  // rad (SPEC 9)
+constexpr double kSigmaRange = 3.0;                 // m (docs/scenarios.md)
+constexpr double kSigmaBearing = 0.3 * kPi / 180.0;  // rad (docs/scenarios.md)
 constexpr double kT = 0.5;                           // s
 
 template <class S>
@@ -120,7 +120,7 @@ TEMPLATE_TEST_CASE("Scenario: the R2-AEKF plugs into the Tracker like the EKF", 
   STATIC_REQUIRE(Config<S>::paper().valid());
   STATIC_REQUIRE(Config<S>::paper().mode == R2AekfMode::kPaper);
   STATIC_REQUIRE(Config<S>{}.mode == R2AekfMode::kDefault);
-  // SPEC 5 defaults.
+  // docs/r2aekf.md defaults.
   const Config<S> c;
   CHECK(d(c.beta_r) == Approx(0.2));
   CHECK(d(c.alpha_r) == Approx(0.5));
@@ -238,7 +238,7 @@ TEMPLATE_TEST_CASE("Scenario: eq. 17-18 mixing: along x axial is the x block, la
 }
 
 // ---------------------------------------------------------------------------
-// The R law (SPEC 5 steps 2-4) inside the filter.
+// The R law (docs/r2aekf.md steps 2-4) inside the filter.
 
 TEMPLATE_TEST_CASE("Scenario: the deadband keeps an R scale at exactly 1 inside it", "[r2aekf][r-law]", double,
                    float) {
@@ -390,7 +390,7 @@ TEMPLATE_TEST_CASE("Scenario: rho inflates R for the gated update only", "[r2aek
 }
 
 // ---------------------------------------------------------------------------
-// Manoeuvre indicators and the Q law (SPEC 5 steps 5-7).
+// Manoeuvre indicators and the Q law (docs/r2aekf.md steps 5-7).
 
 TEMPLATE_TEST_CASE("Scenario: the Q rate limits cap the change per step and the clamps hold", "[r2aekf][q-law]",
                    double, float) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Shared by the sigma-point and CRPF tests: a linear position-only
 // measurement (for the "equals the Kalman filter" checks), the S1 zig-zag
-// truth of SPEC section 9 with seeded polar measurements, the MC-001 truth
+// truth of docs/scenarios.md with seeded polar measurements, the MC-001 truth
 // (CV-2D with white acceleration), a textbook KF in dynamic double Eigen, and
 // the relative-difference measure the square-root tests use.
 #pragma once
@@ -59,7 +59,7 @@ struct ReferenceKf {
   }
 };
 
-/// S1 zig-zag truth (SPEC 9): position and velocity at time t.
+/// S1 zig-zag truth (docs/scenarios.md): position and velocity at time t.
 struct S1Truth {
   static void at(double t, double& x, double& y, double& vx, double& vy) {
     double s = 200.0 * t;
@@ -87,7 +87,7 @@ inline Eigen::Vector2d polar_measurement(double x, double y, double sr, double s
   return z;
 }
 
-/// MC-001 truth (SPEC 9): CV-2D from (1000, 10, 1000, 5), T = 1 s, white
+/// MC-001 truth (docs/scenarios.md): CV-2D from (1000, 10, 1000, 5), T = 1 s, white
 /// acceleration sigma sa per axis; states at k = 0..steps.
 inline std::vector<Eigen::Vector4d> mc001_truth(int steps, double sa, NormalGenerator<double>& n) {
   std::vector<Eigen::Vector4d> xs;

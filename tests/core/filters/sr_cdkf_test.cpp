@@ -19,13 +19,13 @@ SCENARIO("the SR-CDKF equals the CDKF over a whole S1 run", "[sr_cdkf][sr]") {
   GIVEN("CDKF and SR-CDKF on CA-2D with the polar radar, same seeded S1 measurements") {
     WHEN("both run 299 predict/update steps") {
       const auto r = kestrel::test::compare_square_root_on_s1<Cdkf, SrCdkf>(11);
-      THEN("x and P agree to 1e-9 relative at every step (SPEC 5)") {
+      THEN("x and P agree to 1e-9 relative at every step") {
         REQUIRE(r.steps == 299);
         CHECK(r.worst_x < 1e-9);
         CHECK(r.worst_P < 1e-9);
         INFO("worst relative difference: x " << r.worst_x << ", P " << r.worst_P);
         CHECK(r.worst_sqrt < 1e-12);
-        // And it tracks: SPEC 12 gives 82 m RMSE for EKF-CA with qj = 16 on S1
+        // And it tracks: docs/references.md gives 82 m RMSE for EKF-CA with qj = 16 on S1
         // (the weave lags); sanity only, not the comparison.
         CHECK(r.rmse_m < 100.0);
       }

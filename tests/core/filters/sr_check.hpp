@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The square-root forms against their plain forms over a whole S1 run
-// (SPEC 5: "in double precision each square-root form must match its plain
-// form to 1e-9 relative"), on CA-2D with the polar radar: velocity and
+// (docs/filters.md: in double precision each square-root form must match its
+// plain form to 1e-9 relative), on CA-2D with the polar radar: velocity and
 // acceleration are never measured, so any error in how the square-root
 // factor carries the unobserved directions shows up in P.
 #pragma once

@@ -5,7 +5,7 @@
 // the explicit-Q/R overloads the adaptive filter uses, the failure
 // statuses, the linearisation cache, and R2-AEKF on top of both.
 //
-// Tolerance (issue 9): 1e-9 relative. States are compared in units of
+// Tolerance: 1e-9 relative. States are compared in units of
 // their standard deviation (|dx_i| / sqrt(P_ii)), covariances relative to
 // sqrt(P_ii P_jj), innovations relative to sqrt(S_ii); the two paths differ
 // only by the order of the same sums (a few 1e-16 per step, growing slowly
@@ -56,7 +56,7 @@ struct TestRng {
   }
 };
 
-/// One S1-like frame: the zig-zag target of SPEC 9 (x from -15 km at
+/// One S1-like frame: the zig-zag target of docs/scenarios.md (x from -15 km at
 /// 200 m/s, y = 8 km + 300 sin(2 pi t / 15)), sr 3 m, sb 0.3 deg, T 0.5 s.
 struct Frame {
   double dt;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// CV-2D exposes the block structure of CA-2D (issue 9): kAxisDim,
+// CV-2D exposes the block structure of CA-2D: kAxisDim,
 // axis_transition(), axis_process_noise() and a unit upper triangular F1.
 // The filters trust the contract (structure.hpp): jacobian(x, dt) equals
 // blkdiag(axis_transition(dt), ...) and process_noise(dt) equals

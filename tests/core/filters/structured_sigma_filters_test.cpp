@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The closed-form time update of the sigma-point filters on an affine
-// (block-diagonal) motion model (issue 9; filters/sigma_points.hpp) against
+// (block-diagonal) motion model (filters/sigma_points.hpp) against
 // the point form on the same models with their structure hidden
 // (Dense<M>), the oracle: UKF, CDKF, SR-UKF and SR-CDKF, on CA-2D over an
 // S1 run and on CV-2D over an MC-001-like run, both with the polar radar;
@@ -63,7 +63,7 @@ struct Frame {
   Eigen::Vector2d z;
 };
 
-/// S1 (SPEC 9): zig-zag target, T = 0.5 s, sr 3 m, sb 0.3 deg, seeded.
+/// S1 (docs/scenarios.md): zig-zag target, T = 0.5 s, sr 3 m, sb 0.3 deg, seeded.
 std::vector<Frame> s1_frames(int n) {
   using kestrel::test::S1Truth;
   kestrel::NormalGenerator<double> noise(23);
@@ -76,7 +76,7 @@ std::vector<Frame> s1_frames(int n) {
   return out;
 }
 
-/// MC-001-like (SPEC 9): CV-2D truth with white acceleration 0.1 m/s^2,
+/// MC-001-like (docs/scenarios.md): CV-2D truth with white acceleration 0.1 m/s^2,
 /// T = 1 s, sr 1 m, sb 0.002 rad (the CV cases of the campaign).
 std::vector<Frame> mc001_frames(int n) {
   kestrel::NormalGenerator<double> noise(41);

@@ -19,7 +19,7 @@ TEMPLATE_TEST_CASE("Scenario: on a linear model the UKF is the textbook Kalman f
   kestrel::test::check_equals_kalman_filter<Ukf, TestType>();
 }
 
-SCENARIO("UKF weights follow the scaled unscented transform with SPEC defaults", "[ukf]") {
+SCENARIO("UKF weights follow the scaled unscented transform with the documented defaults", "[ukf]") {
   GIVEN("n = 4 and alpha = 1, beta = 2, kappa = 3 - n") {
     using F = Ukf<ConstantVelocity2D<double>, PolarRadar<ConstantVelocity2D<double>>>;
     STATIC_REQUIRE(F::kSigmaCount == 9);

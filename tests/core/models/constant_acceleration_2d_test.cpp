@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// CA-2D motion model: F and Q as SPEC section 3 writes them.
+// CA-2D motion model: F and Q as docs/models.md writes them.
 #include <catch2/catch.hpp>
 
 #include "kestrel/models/motion/constant_acceleration_2d.hpp"
 
 using kestrel::ConstantAcceleration2D;
 
-SCENARIO("CA-2D transition and white-jerk noise follow SPEC section 3", "[models][ca2d]") {
+SCENARIO("CA-2D transition and white-jerk noise follow docs/models.md", "[models][ca2d]") {
   GIVEN("a CA-2D model with qj = 2 and a step T = 0.5 s") {
     ConstantAcceleration2D<double> m;
     m.qj = 2.0;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// CV-2D motion model: F and the DWNA Q as SPEC section 3 writes them, and the
+// CV-2D motion model: F and the DWNA Q as docs/models.md writes them, and the
 // noise gain G with sa^2 G G^T = Q.
 #include <catch2/catch.hpp>
 
@@ -7,7 +7,7 @@
 
 using kestrel::ConstantVelocity2D;
 
-SCENARIO("CV-2D transition and DWNA noise follow SPEC section 3", "[models][cv2d]") {
+SCENARIO("CV-2D transition and DWNA noise follow docs/models.md", "[models][cv2d]") {
   GIVEN("a CV-2D model with sa = 0.3 m/s^2 and T = 0.5 s") {
     ConstantVelocity2D<double> m;
     m.sa = 0.3;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Multipath TOA (SPEC section 4) and CV-3D + sound speed (SPEC section 3):
+// Multipath TOA (docs/models.md) and CV-3D + sound speed (docs/models.md):
 // analytic Jacobian against central differences for the direct and the
 // seabed-reflected path; the image source gives the length of the specular
 // path; F and Q of the 7-state model.
@@ -16,7 +16,7 @@ using Toa = kestrel::MultipathToa<Motion, 4>;
 using kestrel::ArrivalPath;
 using L = Motion::Layout;
 
-/// SPEC 9 UW-003 geometry, plus one beacon moored 40 m down (so the beacon
+/// The UW-003 geometry (docs/scenarios.md), plus one beacon moored 40 m down (so the beacon
 /// depth term of the Jacobian is exercised too).
 Toa uw_model(double beacon3_depth_m = 0.0) {
   Toa toa;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// SPEC section 9's S1 (zig-zag with an axial burst) and S1n generated with
+// docs/scenarios.md's S1 (zig-zag with an axial burst) and S1n generated with
 // integer arithmetic only: the truth comes from Q31.32 math (CORDIC sin,
 // exact hypot, atan2), the noise from a splitmix64 generator and an
 // Irwin-Hall normal (sum of 12 uniforms minus 6, sd 1), and each plot is
@@ -58,7 +58,7 @@ struct S1Options {
   std::uint64_t seed = 1;
   bool time_varying_noise = false;  ///< S1n: range sigma x3 for 60 <= t < 75 s, bearing x3 for 110 <= t < 120 s.
   int steps = 300;                  ///< T = 0.5 s.
-  bool tuned = false;               ///< qj = 160 m^2/s^5 (SPEC 5's tuned EKF-CA) instead of 1.6.
+  bool tuned = false;               ///< qj = 160 m^2/s^5 (docs/r2aekf.md's tuned EKF-CA) instead of 1.6.
 };
 
 /// One step: the truth and the radar plot of time t = k T.
@@ -74,7 +74,7 @@ inline constexpr std::int64_t kS1RangeSigmaMm = 3000;  ///< sr = 3.0 m.
 /// sb = 0.30 deg in binary angle units: 0.3 / 180 * 2^31 = 3579139.4.
 inline constexpr std::int64_t kS1BearingSigmaBam = 3579139;
 
-/// S1 truth at step k (SPEC 9): x = -15000 + s(t), y = 8000 + 300 sin(2 pi t / 15),
+/// S1 truth at step k (docs/scenarios.md): x = -15000 + s(t), y = 8000 + 300 sin(2 pi t / 15),
 /// s(t) at 200 m/s plus +5 m/s^2 for 80 <= t < 85 s.
 inline void s1_truth(int k, Q31_32& x, Q31_32& y) {
   using Q = Q31_32;
@@ -132,7 +132,7 @@ inline constexpr RadarTrackerParams tuned_params() {
   return p;
 }
 
-/// The EKF-CA radar tracker with SPEC 9's sensor and qj = 1.6 (or 160), its
+/// The EKF-CA radar tracker with docs/scenarios.md's sensor and qj = 1.6 (or 160), its
 /// real constants converted at compile time (as on a board).
 template <class Scalar>
 S1Tracker<Scalar> make_s1_tracker(bool tuned) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Robust multilateration (SPEC section 9, UW-003 initialisation): recovers a
+// Robust multilateration (docs/scenarios.md, UW-003 initialisation): recovers a
 // known point from direct and reflected arrivals, rejects an outlier beyond
 // 3 sigma, reports a consistent covariance, shows why the reflected paths
 // matter for depth, and returns a status for too few arrivals, NaN and an

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// PCL models (SPEC sections 3 and 4, paper 002): bistatic CV-1D F and Q,
+// PCL models (docs/models.md, paper 002): bistatic CV-1D F and Q,
 // the [Rb, dRb] measurement (H = I, R), the Doppler to range-rate conversion
 // (sign and magnitude), bistatic geometry against finite differences, the
 // single-point initiator with its zero-Doppler veto, and the PCL filter
@@ -53,7 +53,7 @@ SCENARIO("the bistatic CV-1D model has F = [[1, dt], [0, 1]] and white-accelerat
 SCENARIO("Doppler converts to bistatic range rate as dRb = -lambda fD", "[pcl][model]") {
   GIVEN("the 701 MHz DTV carrier of paper 002") {
     const double lambda = kestrel::wavelength_m(701.0e6);
-    THEN("lambda = c0 / f = 0.4277 m (SPEC section 4)") { CHECK_THAT(lambda, Catch::WithinAbs(0.4277, 5e-5)); }
+    THEN("lambda = c0 / f = 0.4277 m (docs/models.md)") { CHECK_THAT(lambda, Catch::WithinAbs(0.4277, 5e-5)); }
     THEN("a positive Doppler is a closing target (negative range rate) and the magnitude is lambda |fD|") {
       CHECK(kestrel::range_rate_from_doppler(10.0, lambda) == Approx(-4.2766).epsilon(1e-4));
       CHECK(kestrel::range_rate_from_doppler(-122.0, lambda) == Approx(52.18).epsilon(1e-3));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The PCL tracker (SPEC sections 6, 7 and 9 PCL-002): nearest neighbour picks
+// The PCL tracker (docs/tracking.md; PCL-002 in docs/scenarios.md): nearest neighbour picks
 // the target among decoys and respects the gate and the one-candidate-one-
 // track rule; 5-of-6 confirms and deletes exactly when it should; no track
 // starts below 2 Hz while a confirmed track may cross zero Doppler; clutter

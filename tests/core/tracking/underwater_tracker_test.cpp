@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Underwater tracker step() (SPEC section 9, UW-003): initialisation by
+// Underwater tracker step() (docs/scenarios.md, UW-003): initialisation by
 // multilateration, convergence to the truth with c fixed and no noise, the
 // per-channel gate dropping an injected outlier while keeping the good
 // arrivals, predict-only and re-acquisition (after empty frames, and after

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Radar plot CSV reader (SPEC section 11): frames from equal times,
+// Radar plot CSV reader (docs/host_sim.md): frames from equal times,
 // optional columns, unknown columns ignored, and a malformed row reported
 // with its line number (never skipped).
 #include <catch2/catch.hpp>

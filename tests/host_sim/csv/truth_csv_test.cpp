@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Truth CSV reader (SPEC section 11): required and optional columns, z_m
+// Truth CSV reader (docs/host_sim.md): required and optional columns, z_m
 // and unknown columns ignored, malformed rows by line number.
 #include <catch2/catch.hpp>
 #include <cmath>

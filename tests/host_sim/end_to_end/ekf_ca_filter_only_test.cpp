@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The scenarios against SPEC section 12's reference: paper 000's EKF-CA
+// The scenarios against docs/references.md's reference: paper 000's EKF-CA
 // (qj = 1.6) run alone, every plot used, no gate and no track management,
 // gives RMSE about 130 m on S1 and 109 m on S2, and position NEES about 48
 // on S1. This checks the scenario truth, the sensor noise and the filter
@@ -28,7 +28,7 @@ struct FilterOnly {
 
 FilterOnly run_filter_only(const kestrel::sim::ScenarioRun& run) {
   using namespace kestrel;  // NOLINT(google-build-using-namespace)
-  const RadarTrackerParams p;  // SPEC 9 sensor, qj 1.6
+  const RadarTrackerParams p;  // S1/S2 sensor (docs/scenarios.md), qj 1.6
   CaMotion<double> motion;
   motion.qj = p.qj;
   CaPolarRadar<double> radar;
@@ -49,7 +49,7 @@ FilterOnly run_filter_only(const kestrel::sim::ScenarioRun& run) {
   double sum_e2 = 0.0;
   double sum_nees = 0.0;
   std::size_t n = 0;
-  for (std::size_t k = 2; k < run.frames.size(); ++k) {  // SPEC 10: k >= 2
+  for (std::size_t k = 2; k < run.frames.size(); ++k) {  // docs/metrics.md: k >= 2
     REQUIRE(ekf.predict(run.frames[k].t_s - run.frames[k - 1].t_s) == Status::kOk);
     REQUIRE(ekf.update(z(k)) == Status::kOk);
     const double ex = ekf.x()(0) - run.truth[k].x_m;
@@ -74,7 +74,7 @@ FilterOnly mean_over_seeds(const char* scenario_name) {
 }
 }  // namespace
 
-SCENARIO("The scenarios reproduce SPEC 12's EKF-CA reference", "[host_sim][e2e][reference]") {
+SCENARIO("The scenarios reproduce the EKF-CA reference figures", "[host_sim][e2e][reference]") {
   GIVEN("EKF-CA qj 1.6 alone on 5 runs of S1") {
     const FilterOnly m = mean_over_seeds("s1");
     THEN("RMSE is about 130 m and NEES about 48 (qj 1.6 is far too small for the 5.4 g weave)") {

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The fixed-point builds of kestrel-sim's EKF-CA ("ekf-ca-q31_32",
-// "ekf-ca-q23_40") against the double build on SPEC 9's radar scenarios
+// "ekf-ca-q23_40") against the double build on docs/scenarios.md's radar scenarios
 // (S1, S2, S1n, S2n; host_sim's own generators, through the wire stream and
 // the host board loop): the same report sets frame by frame, position within
 // 5 mm of the double tracker's (Q31.32; 0.1 mm for Q23.40) over whole runs,
-// RMSE within 0.5 %, and no fixed-point saturation (issue 8). The `scalars`
+// RMSE within 0.5 %, and no fixed-point saturation. The `scalars`
 // subcommand prints the same comparison as a table (docs/fixed-point.md).
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -53,7 +53,7 @@ SCENARIO("the fixed-point EKF-CA builds of kestrel-sim follow the double build o
   const FilterEntry& dbl = find_filter("ekf-ca");
   const FilterEntry& q31 = find_filter("ekf-ca-q31_32");
   const FilterEntry& q23 = find_filter("ekf-ca-q23_40");
-  const FilterOptions options;  // SPEC 9 sensor, qj 1.6, ungated confirmed tracks
+  const FilterOptions options;  // S1/S2 sensor (docs/scenarios.md), qj 1.6, ungated confirmed tracks
   const ScoringConfig scoring;
   double dev31 = 0, dev23 = 0, rmse31 = 0, rmse23 = 0;
   int other31 = 0, other23 = 0;

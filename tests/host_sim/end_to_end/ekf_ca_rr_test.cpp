@@ -165,7 +165,7 @@ SCENARIO("EKF-CA with range rate holds the S1rr and S2rr targets", "[host_sim][e
         const auto scenario = make_scenario(name);
         const FilterEntry& filter = find_filter(filter_name);
         FilterOptions options;
-        options.qj = 160.0;  // the tuned EKF-CA of SPEC 12; at 1.6 the filter is inconsistent (docs/range_rate.md)
+        options.qj = 160.0;  // the tuned EKF-CA of docs/references.md; at 1.6 the filter is inconsistent (docs/range_rate.md)
         std::vector<RunRecord> runs;
         for (std::uint64_t seed = 0; seed < 3; ++seed) {
           runs.push_back(record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000, ScoringConfig{})));

@@ -3,7 +3,7 @@
 // stream -> StreamFileFeed -> RadarAdapter -> EKF-CA tracker -> sink ->
 // scoring) with paper 000's EKF-CA, qj = 1.6.
 //
-// Bounds, from SPEC section 12: the filter alone reaches about 130 m RMSE
+// Bounds, from docs/references.md: the filter alone reaches about 130 m RMSE
 // on S1 and 109 m on S2 at qj = 1.6 (this project's scenarios reproduce
 // that: 129 m and 109 m over 20 runs, docs/host_sim.md). 200 m is 1.5x the
 // S1 figure, well above the run-to-run spread (+-8 m), and is exceeded by

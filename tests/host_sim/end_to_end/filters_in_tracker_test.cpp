@@ -2,7 +2,7 @@
 // Every filter of the family inside the same Tracker, on S1 and on S2 (seed
 // 1 each; wire frames through hal::to_scan, the HAL boundary a board uses;
 // the default 99.9 % gate), with the single-model qj that suits each (S1:
-// 160, SPEC 5's tuned EKF-CA; S2: 50, the best of {1.6, 5, 16, 50, 160,
+// 160, docs/r2aekf.md's tuned EKF-CA; S2: 50, the best of {1.6, 5, 16, 50, 160,
 // 500} for EKF-CA there): the track starts by two points, is confirmed by
 // frame 2 and held by one track to the end, through S1's weave and axial
 // burst and S2's turns and jerk bursts, in double and in float, with a

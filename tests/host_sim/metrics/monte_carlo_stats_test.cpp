@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Monte Carlo aggregation (SPEC section 10: mean with 1.96 sd / sqrt(n)),
+// Monte Carlo aggregation (docs/metrics.md: mean with 1.96 sd / sqrt(n)),
 // recovery over the runs that lost the track, and the nearest-rank
 // percentiles of the timing report.
 #include <catch2/catch.hpp>

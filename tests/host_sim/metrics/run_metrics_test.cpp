@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// SPEC section 10 per-run figures on hand-made error sequences, where every
+// docs/metrics.md per-run figures on hand-made error sequences, where every
 // expected value can be worked out on paper.
 #include <catch2/catch.hpp>
 #include <cmath>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The board loop must not allocate (SPEC section 1, STYLE "Allocation
-// guard"): a whole S1 run through hal::Runner - feed decode, adapter,
+// The board loop must not allocate (docs/architecture.md; the allocation
+// guard of tests/support): a whole S1 run through hal::Runner - feed decode, adapter,
 // Tracker::step, sink publish - inside an AllocationGuard. The stream is
 // built and the sink sized before the guard, as a board sizes its buffers
 // at start-up.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// S1n/S2n against SPEC section 9: range sigma x3 for 60 <= t < 75 s and
+// S1n/S2n against docs/scenarios.md: range sigma x3 for 60 <= t < 75 s and
 // bearing sigma x3 for 110 <= t < 120 s, and the S1/S2 sensor itself
 // (sr = 3 m, sb = 0.30 deg) checked on the generated plots.
 #include <catch2/catch.hpp>
@@ -23,7 +23,7 @@ double bearing_residual(const ScenarioRun& run, std::size_t k) {
 }
 }  // namespace
 
-SCENARIO("The n variants scale the noise at the SPEC's times", "[host_sim][scenarios][noise]") {
+SCENARIO("The n variants scale the noise at the documented times", "[host_sim][scenarios][noise]") {
   GIVEN("the S1n/S2n noise profile") {
     const RadarNoise n = paper000_varying_radar_noise();
     THEN("range sigma is x3 exactly on [60, 75) s") {

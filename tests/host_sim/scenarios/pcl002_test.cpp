@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// PCL-002 against SPEC section 9 (the drone's box and limits, the frame
+// PCL-002 against docs/scenarios.md (the drone's box and limits, the frame
 // statistics, reproducibility), the PCL metrics on a hand-made run, and an
-// end-to-end check of the tracker through the board loop (goals of issue 5
+// end-to-end check of the tracker through the board loop (the goals of docs/pcl.md
 // on a few seeds; figures independent of the number of worker threads).
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -15,7 +15,7 @@
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace): test file
 using Catch::Matchers::WithinAbs;
 
-SCENARIO("PCL-002 drones stay in the SPEC box and within the acceleration limits", "[host_sim][scenarios][pcl]") {
+SCENARIO("PCL-002 drones stay in the scenario box and within the acceleration limits", "[host_sim][scenarios][pcl]") {
   const PclScenarioConfig c = pcl002_config();
   double r_min = 1e9, r_max = 0.0, y_min = 1e9, z_min = 1e9, z_max = 0.0, v_max = 0.0;
   double along_max = 0.0, total_max = 0.0;
@@ -50,7 +50,7 @@ SCENARIO("PCL-002 drones stay in the SPEC box and within the acceleration limits
   CHECK(v_max <= 26.0);
   CHECK(along_max <= 2.0 + 1e-6);
   CHECK(total_max <= std::hypot(3.0, 2.0));
-  THEN("the drones use the box and the Doppler span SPEC describes") {
+  THEN("the drones use the box and the Doppler span the scenario describes") {
     CHECK(r_min < 400.0);
     CHECK(r_max > 800.0);
     CHECK(v_max > 20.0);
@@ -76,7 +76,7 @@ SCENARIO("PCL-002 truth: Rb and fD follow the geometry", "[host_sim][scenarios][
   }
 }
 
-SCENARIO("PCL-002 frames: detection, noise, clutter and ridge as SPEC section 9", "[host_sim][scenarios][pcl]") {
+SCENARIO("PCL-002 frames: detection, noise, clutter and ridge as docs/scenarios.md describes", "[host_sim][scenarios][pcl]") {
   const PclScenarioConfig c = pcl002_config();
   std::size_t frames = 0, detections = 0, candidates = 0, ridge = 0;
   double se_rb = 0.0, se_fd = 0.0;
@@ -190,7 +190,7 @@ SCENARIO("PCL metrics on a hand-made run", "[host_sim][metrics][pcl]") {
     out.frames.push_back(o);
   }
   const PclRunMetrics m = score_pcl_run(run, out, PclTolerance{});
-  THEN("each figure counts what SPEC section 9 says") {
+  THEN("each figure counts what docs/metrics.md says") {
     CHECK(m.confirmed_tracks == 2);
     CHECK(m.target_tracks == 1);
     CHECK(m.false_tracks == 1);
@@ -210,7 +210,7 @@ SCENARIO("PCL metrics on a hand-made run", "[host_sim][metrics][pcl]") {
   }
 }
 
-SCENARIO("the PCL tracker meets issue 5's goals on pcl002 through the board loop", "[host_sim][end_to_end][pcl]") {
+SCENARIO("the PCL tracker meets its accuracy goals on pcl002 through the board loop", "[host_sim][end_to_end][pcl]") {
   const PclScenarioConfig sc = pcl002_config();
   PclMonteCarloConfig c;
   c.runs = 12;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// S1 truth against SPEC section 9: the printed initial velocity and range
+// S1 truth against docs/scenarios.md: the printed initial velocity and range
 // span, the axial burst, and the analytic velocity against differences of
 // the analytic position (catches a wrong derivative or time scale).
 #include <algorithm>
@@ -13,7 +13,7 @@ using kestrel::sim::make_scenario;
 using kestrel::sim::s1_truth;
 using Catch::Matchers::WithinAbs;
 
-SCENARIO("S1 truth matches the SPEC's description", "[host_sim][scenarios][s1]") {
+SCENARIO("S1 truth matches its description in the docs", "[host_sim][scenarios][s1]") {
   GIVEN("the S1 scenario") {
     const auto s1 = make_scenario("s1");
     const auto run = s1->generate(0);
@@ -26,13 +26,13 @@ SCENARIO("S1 truth matches the SPEC's description", "[host_sim][scenarios][s1]")
       CHECK(s1->info().loss_threshold_m == 300.0);
     }
     THEN("the initial state is (-15000, 8000) m moving at (200, 125.7) m/s") {
-      // SPEC prints 125.7 = 300 * 2 pi / 15 rounded to 0.1.
+      // docs/scenarios.md prints 125.7 = 300 * 2 pi / 15 rounded to 0.1.
       CHECK_THAT(run.truth[0].x_m, WithinAbs(-15000.0, 1e-9));
       CHECK_THAT(run.truth[0].y_m, WithinAbs(8000.0, 1e-9));
       CHECK_THAT(run.truth[0].vx_mps, WithinAbs(200.0, 1e-12));
       CHECK_THAT(run.truth[0].vy_mps, WithinAbs(125.7, 0.05));
     }
-    THEN("the range spans 7.7-18.4 km (to the SPEC's 0.1 km)") {
+    THEN("the range spans 7.7-18.4 km (to the documented 0.1 km)") {
       double r_min = 1e12;
       double r_max = 0.0;
       for (const auto& t : run.truth) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// S2 truth against SPEC section 9: start, range span, the heading changes
+// S2 truth against docs/scenarios.md: start, range span, the heading changes
 // of the two left/right pairs, the turn radius, the jerk bursts' speed
 // gains and the final speed.
 #include <algorithm>
@@ -29,7 +29,7 @@ double max_heading_deg(const std::vector<TruthSample>& truth, double t0, double 
 }
 }  // namespace
 
-SCENARIO("S2 truth matches the SPEC's description", "[host_sim][scenarios][s2]") {
+SCENARIO("S2 truth matches its description in the docs", "[host_sim][scenarios][s2]") {
   GIVEN("the S2 scenario") {
     const auto s2 = kestrel::sim::make_scenario("s2");
     const auto truth = s2->generate(0).truth;
@@ -41,7 +41,7 @@ SCENARIO("S2 truth matches the SPEC's description", "[host_sim][scenarios][s2]")
       CHECK(truth[0].vx_mps == 180.0);
       CHECK(truth[0].vy_mps == 0.0);
     }
-    THEN("the range spans 12.7-26.3 km (to the SPEC's 0.1 km)") {
+    THEN("the range spans 12.7-26.3 km (to the documented 0.1 km)") {
       double r_min = 1e12;
       double r_max = 0.0;
       for (const auto& t : truth) {

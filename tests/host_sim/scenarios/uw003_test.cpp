@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// UW-003 against SPEC section 9 (start, geometry, sound-speed bounds, noise
+// UW-003 against docs/scenarios.md (start, geometry, sound-speed bounds, noise
 // and outlier statistics, variants sharing the draws, reproducibility), the
 // UW metrics on a hand-made run, and an end-to-end check of the underwater
-// tracker through the board loop on a few seeds (issue 6's goals in
+// tracker through the board loop on a few seeds (the goals in
 // direction: gating beats no gating, reflected arrivals beat direct only).
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -24,7 +24,7 @@ double distance(const UwTruth& t, double bx, double by, double bz, double z) {
 
 }  // namespace
 
-SCENARIO("UW-003 frames follow SPEC section 9", "[host_sim][scenarios][uw]") {
+SCENARIO("UW-003 frames follow docs/scenarios.md", "[host_sim][scenarios][uw]") {
   const UwScenarioConfig c = uw003_config();
   GIVEN("200 seeded runs") {
     std::size_t arrivals = 0, outliers = 0;

@@ -201,7 +201,7 @@ SCENARIO("S1 written as CAT048 replays to the tracks of the wire replay", "[host
         UNSCOPED_INFO("largest position difference between the replays " << worst << " m");
         // The plot errors the quantisation adds (range sd 2.1 m, bearing
         // sd 28 urad = 0.6 m at 20 km) are 1/20 of the sensor noise
-        // (SPEC 9: 50 m, 1 mrad); the filter averages them further.
+        // (50 m, 1 mrad); the filter averages them further.
         CHECK(worst < 10.0);
         CHECK(std::abs(rmse_ast - rmse_wire) < 1.0);
       }

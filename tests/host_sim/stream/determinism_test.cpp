@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Reproducibility (SPEC section 9: "every scenario is reproducible bit for
-// bit"): the same seed gives the same stream bytes, another seed does not;
+// Reproducibility (docs/scenarios.md: a run is a function of its seed, bit
+// for bit): the same seed gives the same stream bytes, another seed does not;
 // Monte Carlo figures do not depend on the number of threads; and the plot
 // CSV written from a stream replays to the same bytes.
 #include <catch2/catch.hpp>

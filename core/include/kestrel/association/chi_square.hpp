@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Chi-square quantiles for ellipsoidal gates (SPEC section 6), as a
+// Chi-square quantiles for ellipsoidal gates (docs/tracking.md), as a
 // compile-time table: dimension 1..16 by gate probability (16 = the most TOA
 // channels a sonar frame carries, for gates over a variable subset). Values
 // are the standard inverse CDF to 3 decimals (e.g. scipy.stats.chi2.ppf(0.99,

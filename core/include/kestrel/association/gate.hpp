@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Ellipsoidal gate (SPEC section 6): accept a measurement when its normalised
+// Ellipsoidal gate (docs/tracking.md): accept a measurement when its normalised
 // squared distance nu^T S^-1 nu is below the chi-square quantile of the
 // measurement dimension at the chosen probability.
 #pragma once

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Global nearest neighbour (SPEC section 6): the optimal assignment of
+// Global nearest neighbour (docs/tracking.md): the optimal assignment of
 // tracks (rows) to measurements (columns) on a bounded cost matrix, each
 // track taking at most one measurement and each measurement feeding at most
 // one track, minimising

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// A per-channel gate in front of the EKF (SPEC sections 5 and 6; paper 003
+// A per-channel gate in front of the EKF (docs/filters.md and docs/tracking.md; paper 003
 // section 3.3.3): the measurement model declares every channel it can know
 // (kMeasDim, a compile-time maximum); a frame says which of them it carries
 // with a ChannelMask, the gate drops more, and Ekf fuses exactly the

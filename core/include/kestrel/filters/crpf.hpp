@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Cost-reference particle filter (SPEC section 5; paper 001 section 3.4,
+// Cost-reference particle filter (docs/filters.md; paper 001 section 3.4,
 // eq. 4-8 and table 6, after Miguez, Bugallo and Djuric 2004, "A new class
 // of particle filters for random dynamic systems with unknown statistics",
 // EURASIP JASP 2004:15, and Xu 2006). It needs scales, not noise
@@ -11,14 +11,14 @@
 //   1. noise-free prediction  xp_i = f(x_(t-1)^i, dt)                  (predict)
 //   2. risk  R_i = lambda C_(t-1)^i + dC(xp_i | y_t)                     (eq. 6)
 //      dC(x | y) = sum_c (residual_c(y, h(x)) / s_c)^2, s_c = sqrt(R_cc):
-//      the channels are normalised by their tuned scales (SPEC 5: without
+//      the channels are normalised by their tuned scales (docs/filters.md: without
 //      it the bearing term vanishes next to range in metres).
 //   3. selection PMF  pi_i ∝ (R_i - min R + delta)^(-beta)                (eq. 8)
 //   4. systematic resampling by pi (Kitagawa 1996): one uniform offset,
 //      N equally spaced pointers, one pass over the cumulative sum, so the
 //      work is exactly N + N steps whatever the PMF (bounded).
 //   5. propagation  x_t^i = xp_(j_i) + G a_i, a_i ~ N(0, sj^2 I): an
-//      acceleration kick (SPEC 5; default sj = 2 m/s^2) when the motion model
+//      acceleration kick (docs/filters.md; default sj = 2 m/s^2) when the motion model
 //      offers noise_gain(dt) (CV-2D does); otherwise x_t^i = xp_(j_i) + L w_i,
 //      w_i ~ N(0, I), L L^T = Q(dt) of the filter's motion model.
 //   6. cost  C_t^i = lambda C_(t-1)^(j_i) + dC(x_t^i | y_t)              (eq. 5)
@@ -62,7 +62,7 @@
 
 namespace kestrel {
 
-/// CRPF tuning (SPEC 5 defaults).
+/// CRPF tuning; the defaults are those of docs/filters.md.
 template <class S>
 struct CrpfParams {
   S lambda = lit<S>(0.8);      ///< Forgetting factor of the cost, (0, 1].

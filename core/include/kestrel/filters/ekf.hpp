@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Extended Kalman filter on fixed-size storage (SPEC section 5; paper 000
+// Extended Kalman filter on fixed-size storage (docs/filters.md; paper 000
 // section 2-1 and paper 001 section 2 for the equations). The dense update
 // uses the Joseph form P+ = (I - K H) P (I - K H)^T + K R K^T, then
 // symmetrises; the structured update (below) computes the same matrix as
@@ -29,7 +29,7 @@
 // The NIS is the sum of the channels' nu_i^2 / s_i; innovation() gets the
 // same value from an LDL^T of the whitened S (divisors >= 1 again).
 //
-// Model structure (kestrel/filters/structure.hpp, issue 9) is used when the
+// Model structure (kestrel/filters/structure.hpp; docs/performance.md) is used when the
 // models expose it, detected at compile time: a block-diagonal motion model
 // gets F P F^T and Q per axis block; a measurement model with few non-zero
 // Jacobian columns gets P H^T and H P H^T from those columns, one
@@ -102,7 +102,7 @@ class Ekf {
   static constexpr ChannelMask kAllChannels = all_channels(kMeasDim);
   /// Model structure in use (structure.hpp). Floating-point scalars only:
   /// the fixed-point path keeps the dense arithmetic its golden hashes were
-  /// recorded with (issue 8) until they are re-recorded deliberately.
+  /// recorded with until they are re-recorded deliberately.
   static constexpr bool kBlockPredict =
       BlockDiagonalMotion<Motion> && !ScalarTraits<typename Motion::Scalar>::kIsFixedPoint;
   static constexpr bool kSparseUpdate =

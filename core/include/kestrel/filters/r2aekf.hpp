@@ -6,7 +6,7 @@
 // (eqs. 8-12, plus robust gating) and shapes the process noise along and
 // across the estimated velocity from manoeuvre indicators (eqs. 13-18).
 //
-// Two modes share one implementation (SPEC section 5, R2-AEKF):
+// Two modes share one implementation (docs/r2aekf.md, R2-AEKF):
 //   - kPaper follows the printed equations: plain EWMA NIS R law (eq. 9-10),
 //     robust gating with rho > 1, turn indicator tau = |nu_b|/T (eq. 13-14)
 //     and axial indicator sqrt(mean NIS_r) (eq. 15); a switch selects the
@@ -17,7 +17,7 @@
 //     gating is off (rho = 1); the manoeuvre indicators come from the
 //     innovation mapped to Cartesian and rotated into the velocity frame,
 //     normalised by its predicted spread, so they hold at any aspect angle.
-// Order of one step (SPEC 5, steps 1-7): predict with Q_(k-1); innovation
+// Order of one step (docs/r2aekf.md, steps 1-7): predict with Q_(k-1); innovation
 // with R_(k-1); per-channel NIS; R law -> R_k; S with R_k, robust gating;
 // EKF update (Ekf::update); indicators; Q scales -> Q_k for the next
 // prediction. Everything lives in fixed-size storage; no allocation, no
@@ -41,10 +41,10 @@
 
 namespace kestrel {
 
-/// Which form of the R2-AEKF equations to run (SPEC 5).
+/// Which form of the R2-AEKF equations to run (docs/r2aekf.md).
 enum class R2AekfMode : std::uint8_t {
   kPaper,    ///< The printed equations of paper 000 section 2-2, literally.
-  kDefault,  ///< With the SPEC 5 corrections (spread R law, velocity-frame indicators).
+  kDefault,  ///< With the corrections of docs/r2aekf.md (spread R law, velocity-frame indicators).
 };
 
 /// How the axial/lateral Q scales become a process noise (eqs. 17-18).
@@ -53,10 +53,10 @@ enum class R2AekfQForm : std::uint8_t {
   kFullRotated,  ///< kron(M, Q1D), M = sQax a a^T + sQlat t t^T (keeps the x-y coupling).
 };
 
-/// Every R2-AEKF parameter, unitless unless stated. The defaults are SPEC 5's
-/// starting point (beta 0.2, alphaR 0.5, delta 0.5, R scale in [1, 5], uR 1.3,
+/// Every R2-AEKF parameter, unitless unless stated. The defaults are the documented
+/// starting point (docs/r2aekf.md) (beta 0.2, alphaR 0.5, delta 0.5, R scale in [1, 5], uR 1.3,
 /// dR 0.9, alphaQ 50, Q scale in [1, 400], uQ 2, dQ 0.9) in default mode;
-/// values SPEC leaves open are marked "(Kestrel)" and explained in
+/// values neither the paper nor that starting point gives are marked "(Kestrel)" and explained in
 /// docs/r2aekf.md. paper() gives the paper-mode preset.
 template <class Scalar>
 struct R2AekfConfig {
@@ -261,7 +261,7 @@ class R2Aekf {
     return s;
   }
 
-  /// Predict by dt seconds with Q_(k-1) of eq. 18 (SPEC 5 step 1).
+  /// Predict by dt seconds with Q_(k-1) of eq. 18 (docs/r2aekf.md step 1).
   /// @return kOk; kNonFinite (filter unchanged).
   [[nodiscard]] Status predict(Scalar dt) {
     cache_valid_ = false;
@@ -276,7 +276,7 @@ class R2Aekf {
   }
 
   /// Innovation of z with the current R_k (the one the next update starts
-  /// from, SPEC 5 step 1). Observably pure: the gate uses it. It remembers
+  /// from, docs/r2aekf.md step 1). Observably pure: the gate uses it. It remembers
   /// its result so that update() of the same z can reuse it (one object is
   /// not to be used from two threads at once, like any filter here).
   Innov innovation(const MeasVec& z) const {
@@ -286,7 +286,7 @@ class R2Aekf {
     return cached_;
   }
 
-  /// One adaptive update, SPEC 5 steps 1-7 (eqs. 7-18).
+  /// One adaptive update, docs/r2aekf.md steps 1-7 (eqs. 7-18).
   /// @return kOk; kNonFinite or kNotPositiveDefinite, with x, P and the
   ///         adaptation unchanged (adaptation().status records it).
   [[nodiscard]] Status update(const MeasVec& z) {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The sigma-point Kalman filter, additive noise, over a choice of point set
-// (SPEC section 5; paper 001 section 3.2): Ukf is the unscented Kalman
+// (docs/filters.md; paper 001 section 3.2): Ukf is the unscented Kalman
 // filter, scaled unscented transform (table 2, which is van der Merwe 2004
 // algorithm 8 / Wan and van der Merwe 2000); Cdkf is the central difference
 // Kalman filter, Stirling's interpolation in place of the Taylor series
@@ -186,12 +186,12 @@ class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet
   Cov P_;
 };
 
-/// Unscented Kalman filter (algorithm 8), SPEC 5 parameters by default:
+/// Unscented Kalman filter (algorithm 8), the parameters of docs/filters.md by default:
 /// UnscentedParams<S, n>{alpha = 1, beta = 2, kappa = 3 - n}.
 template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
 using Ukf = SigmaPointFilter<Motion, Measurement, UnscentedPoints>;
 
-/// Central difference Kalman filter (algorithm 9), SPEC 5 parameter by
+/// Central difference Kalman filter (algorithm 9), the parameter of docs/filters.md by
 /// default: CentralDifferenceParams<S>{h = sqrt(3)}.
 template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
 using Cdkf = SigmaPointFilter<Motion, Measurement, CentralDifferencePoints>;

@@ -2,7 +2,7 @@
 // Sigma points, their weights and their statistics: the point sets that the
 // sigma-point filters (filters/sigma_point_filter.hpp, plain;
 // filters/sr_sigma_point_filter.hpp, square root) take as a template
-// parameter (SPEC section 5; paper 001 section 3.2-3.3 and tables 2-5, which
+// parameter (docs/filters.md; paper 001 section 3.2-3.3 and tables 2-5, which
 // follow van der Merwe 2004, "Sigma-point Kalman filters for probabilistic
 // inference in dynamic state-space models", PhD thesis, OGI, sections
 // 3.2-3.4 and algorithms 8-11). A point set owns its weights and how the
@@ -75,7 +75,7 @@ template <int kN>
 inline constexpr int kSigmaPointCount = 2 * kN + 1;
 
 /// Scaled unscented transform parameters (Julier 2002; van der Merwe 2004
-/// eq. 3.11-3.12). SPEC 5 defaults: alpha = 1, beta = 2 (optimal for a
+/// eq. 3.11-3.12). Defaults (docs/filters.md): alpha = 1, beta = 2 (optimal for a
 /// Gaussian prior), kappa = 3 - n.
 template <class S, int kN>
 struct UnscentedParams {
@@ -86,7 +86,7 @@ struct UnscentedParams {
 
 /// Central difference (Stirling interpolation) parameter (Norgaard, Poulsen,
 /// Ravn 2000; van der Merwe 2004 section 3.4.1): h^2 = 3 is optimal for a
-/// Gaussian prior (it matches the fourth moment). SPEC 5: h = sqrt(3).
+/// Gaussian prior (it matches the fourth moment). Default h = sqrt(3) (docs/filters.md).
 template <class S>
 struct CentralDifferenceParams {
   S h = lit<S>(1.7320508075688772935);  ///< Half-width of the central difference, h >= 1.
@@ -297,7 +297,7 @@ Mat<S, kN, kM> gain(const Eigen::LLT<Mat<S, kM, kM>>& llt_S, const Mat<S, kN, kM
 ///   Wm_0 = lambda / (n + lambda), Wc_0 = Wm_0 + 1 - alpha^2 + beta,
 ///   W_i = 1 / (2 (n + lambda)) for i >= 1 (mean and covariance alike),
 /// and its statistics: weighted outer products of the deviations from the
-/// mean. Wc_0 may be negative (n > 3 with the SPEC defaults), so the square
+/// mean. Wc_0 may be negative (n > 3 with the default parameters), so the square
 /// root form leaves X_0 out of the QR and adds it by a rank-1 update.
 template <class Scalar, int kN>
 struct UnscentedPoints {

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The square-root time update of an affine, block-diagonal motion model
-// (issue 9): Sx- = qr{[F Sx, sqrt(Q)]}, which filters/sigma_points.hpp's
+// (docs/performance.md): Sx- = qr{[F Sx, sqrt(Q)]}, which filters/sigma_points.hpp's
 // header note shows to be the SR-UKF and SR-CDKF time update of such a
 // model exactly (van der Merwe 2004, algorithms 10 and 11, with Y_i - x- =
 // +-c F Sx_i). The triangularisation is math/triangular.hpp's Householder

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The square-root sigma-point Kalman filter, additive noise, over a choice of
-// point set (SPEC section 5; paper 001 section 3.3): SrUkf is the
+// point set (docs/filters.md; paper 001 section 3.3): SrUkf is the
 // square-root UKF (table 4, which is van der Merwe and Wan 2001 / van der
 // Merwe 2004 algorithm 10); SrCdkf is the square-root CDKF (table 5, which
 // is van der Merwe 2004 algorithm 11). It carries the lower-triangular

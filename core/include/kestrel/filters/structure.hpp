@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Model structure the generic filters exploit when a model exposes it
-// (issue 9), detected at compile time, with the dense arithmetic as the
+// (docs/performance.md), detected at compile time, with the dense arithmetic as the
 // fallback, the test oracle and the baseline. No filter is written twice: a
 // filter asks "does this model expose X?" (a concept below) and calls the
 // kernel here in place of the dense product; the rest of the filter is

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Compile-time contracts between models and filters (STYLE "Shape of a model").
+// Compile-time contracts between models and filters (docs/models.md).
 // A filter names its models as template parameters constrained by these
 // concepts; a model that lacks residual() or mixes scalars fails to compile
 // at the filter's declaration, not deep inside Eigen (tests/compile_fail/).

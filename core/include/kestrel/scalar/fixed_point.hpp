@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The project's fixed-point scalar (SPEC section 2): a signed Q-format number
+// The project's fixed-point scalar (docs/models.md): a signed Q-format number
 // on int64 storage, templated on the fraction bits (Q31.32 by default, Q23.40
 // as the fine-grained option), for FPU-less cores. Every operation is integer
 // only and gives one correctly rounded result (round to nearest, ties to

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Integer-only math for FixedPoint (SPEC section 2) and its ScalarTraits
+// Integer-only math for FixedPoint (docs/models.md) and its ScalarTraits
 // specialisation, so every model and filter runs on it unchanged.
 //   - sqrt(a): integer square root of the exact 128-bit a * 2^F, rounded to
 //     nearest: correctly rounded (error <= 0.5 LSB).

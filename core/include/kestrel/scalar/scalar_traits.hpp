@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // ScalarTraits<S>: the few operations core needs beyond + - * /, chosen at
-// compile time per scalar type (SPEC section 2). double and float map to
-// <cmath>, except atan2, which is Kestrel's own (math/atan2.hpp); the fixed-point Q type (kestrel/scalar/fixed_point.hpp) brings its
+// compile time per scalar type (docs/models.md). double and float map to
+// <cmath>, except atan2, which is Kestrel's own (math/atan2.hpp); the
+// fixed-point Q type (kestrel/scalar/fixed_point.hpp) brings its
 // own specialisation with integer-only implementations. Every model and
 // filter calls these, never std:: math directly, so the scalar is a true
 // template parameter.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Robust least-squares multilateration of one TOA frame with a known sound
-// speed: how the underwater tracker starts (SPEC section 9, UW-003: "a
+// speed: how the underwater tracker starts (docs/scenarios.md, UW-003: "a
 // robust least-squares multilateration of the first frame with c = 1500 m/s:
 // Gauss-Newton on all arrivals from several starting depths, depth clipped
 // to (0, D), residuals over 3 sigma rejected"). The direct and the
@@ -18,7 +18,7 @@
 //   2. if the largest |r_i| exceeds reject_sigma, that arrival is rejected
 //      and 1 runs again from the current point (at most max_rejections
 //      times, and never below min_arrivals inliers).
-// Raw residuals, as SPEC 9 says: standardised ones (r_i / sqrt(1 - h_i))
+// Raw residuals, as UW-003's start asks (docs/scenarios.md): standardised ones (r_i / sqrt(1 - h_i))
 // were tried and refused good direct-only frames, whose leverages are
 // meaningless where depth is nearly unobservable. A single outlier of about
 // 4 sigma can pull a fix by a few depth sigmas without any residual passing

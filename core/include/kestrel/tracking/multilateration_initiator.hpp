@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Single-point initiation from a multilateration fix (paper 003, section
-// 3.3; SPEC sections 6 and 9, UW-003): one sonar frame, whose arrivals are
+// 3.3; docs/tracking.md and docs/scenarios.md, UW-003): one sonar frame, whose arrivals are
 // labelled by beacon and path, fixes the position by robust
 // multilateration (tracking/multilateration.hpp); the track's filter then
 // starts from a wide prior centred on the fix and takes one update with the

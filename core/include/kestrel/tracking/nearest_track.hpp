@@ -3,9 +3,9 @@
 // tracker sees the frame: for each measurement, the smallest normalised
 // squared distance nu^T S^-1 nu to any initialised track's prediction at the
 // frame time (the quantity the ellipsoidal gate and nearest-neighbour
-// association of SPEC section 6 use). A front end that must drop candidates
+// association of docs/tracking.md use). A front end that must drop candidates
 // from an over-capacity frame uses it to drop those farthest from every
-// track first (SPEC section 9, PCL-002; kestrel/hal/pcl_adapter.hpp).
+// track first (docs/scenarios.md, PCL-002; kestrel/hal/pcl_adapter.hpp).
 // The table is read only: each track's filter is copied and predicted.
 // Work: kMaxTracks predictions and kMaxTracks x n innovations.
 #pragma once

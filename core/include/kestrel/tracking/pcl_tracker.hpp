@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The ready-made passive-radar (PCL) tracker of paper 002 and SPEC section 9
+// The ready-made passive-radar (PCL) tracker of paper 002 and docs/scenarios.md
 // (PCL-002): a linear Kalman filter on the bistatic CV-1D model [Rb, dRb]
 // with the bistatic range / range-rate measurement (H = I), single-point
 // initiation with the zero-Doppler start veto, an ellipsoidal gate per track
@@ -32,8 +32,9 @@
 namespace kestrel {
 
 /// Parameters of the PCL tracker, SI units (Doppler in Hz). Defaults are
-/// SPEC section 9's PCL-002 sensor (701 MHz DTV, sigma_Rb = 10 m,
-/// sigma_fD = 0.5 Hz) and the track management SPEC found workable there.
+/// the PCL-002 sensor of docs/scenarios.md (701 MHz DTV, sigma_Rb = 10 m,
+/// sigma_fD = 0.5 Hz) and the track management a check found workable there
+/// (docs/references.md, reference figures).
 struct PclTrackerParams {
   double carrier_hz = 701.0e6;            ///< Illuminator carrier; lambda = c0 / f (0.4277 m).
   double sigma_rb_m = 10.0;               ///< Bistatic range noise, m.
@@ -78,7 +79,7 @@ using PclKf = Ekf<PclMotion<Scalar>, PclMeasurement<Scalar>>;
 template <class Scalar>
 using PclInitiator = SinglePointInitiator<PclMotion<Scalar>, PclMeasurement<Scalar>>;
 
-/// Default capacities for PCL-002: 32 candidates per frame (SPEC section 9)
+/// Default capacities for PCL-002: 32 candidates per frame (docs/scenarios.md)
 /// and room for the tentative tracks that about 22 clutter candidates a frame
 /// start (each lives at least 3 frames under 5-of-6: start, two misses).
 inline constexpr std::size_t kPclMaxCandidates = 32;

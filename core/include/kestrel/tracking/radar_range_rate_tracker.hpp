@@ -22,8 +22,8 @@ namespace kestrel {
 /// range-bearing tracker plus the range-rate channel.
 struct RadarRangeRateTrackerParams {
   RadarTrackerParams radar{};         ///< Range, bearing, motion, initiation and management.
-  /// srr, m/s. Default: the s1rr/s2rr scenarios' generator value (SPEC fixes
-  /// none; docs/range_rate.md says why 0.5 m/s).
+  /// srr, m/s. Default: the s1rr/s2rr scenarios' generator value (no source
+  /// paper fixes one; docs/range_rate.md says why 0.5 m/s).
   double sigma_range_rate_mps = 0.5;
   /// Plots with |range rate| above this are out of range (the frame is
   /// refused, as for range): no track is faster than radar.max_speed_mps.

@@ -16,8 +16,8 @@
 
 namespace kestrel {
 
-/// Parameters of the radar tracker, SI units. Defaults are SPEC section 9's
-/// S1/S2 sensor and paper 000's EKF-CA (qj = 1.6 m^2/s^5).
+/// Parameters of the radar tracker, SI units. Defaults are the
+/// S1/S2 sensor of docs/scenarios.md and paper 000's EKF-CA (qj = 1.6 m^2/s^5).
 struct RadarTrackerParams {
   double sigma_range_m = 3.0;                  ///< sr.
   double sigma_bearing_rad = 0.3 * 3.14159265358979323846 / 180.0;  ///< sb (0.30 deg).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Single-point initiation (SPEC sections 7 and 9, PCL-002): when one
+// Single-point initiation (docs/tracking.md and docs/scenarios.md, PCL-002): when one
 // measurement determines the whole state (the passive radar measures Rb and,
 // through the Doppler, dRb), a tentative track starts initialised from one
 // unused candidate: x0 = z, P0 = R, through the measurement model's

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // One sonar frame as the core sees it: a time and up to kCapacity arrivals,
-// each a travel time in seconds labelled by beacon and path (SPEC section 4,
+// each a travel time in seconds labelled by beacon and path (docs/models.md,
 // TOA with multipath). The HAL converts its integer wire frames into this
 // (kestrel/hal/sonar_adapter.hpp); core never sees the wire format.
 #pragma once

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // One track of the table and the report every tracker publishes for it,
-// whatever the sensor kind (SPEC section 7: stable id, status, age, hit/miss
+// whatever the sensor kind (docs/tracking.md: stable id, status, age, hit/miss
 // counters and the last innovation statistics, per channel in the one
 // diagnostics record FusionDiagnostics).
 #pragma once

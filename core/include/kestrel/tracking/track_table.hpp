@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// A static table of tracks with compile-time capacity (SPEC section 7). Slots
+// A static table of tracks with compile-time capacity (docs/tracking.md). Slots
 // are reused; a track's id is stable for its life and ids are not reused
 // until the 32-bit counter wraps. Every loop is over kCapacity. A bitmask of
 // the allocated slots lets the tracker visit the active tracks only
 // (active_slots()), so a frame with one track does not pay for scanning the
-// whole capacity five times (issue 9).
+// whole capacity five times.
 #pragma once
 
 #include <bit>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The real-time loop of SPEC section 8: one call per frame,
+// The real-time loop of docs/tracking.md: one call per frame,
 //   step(scan): validate -> predict every track to the frame time -> gate and
 //   associate (confirmed tracks first, then tentative ones; one track per
 //   measurement) -> update ->
@@ -127,7 +127,7 @@ struct TrackerConfig {
   GateProbability gate_tentative = GateProbability::k99;  ///< Gate of tentative tracks.
   /// When positive, replaces the chi-square quantile of gate_confirmed (d2
   /// units). For filter-evaluation runs with one target and no clutter
-  /// (SPEC 9 S1/S2, scored as the papers score filters, ungated): a gate
+  /// (S1/S2 of docs/scenarios.md, scored as the papers score filters, ungated): a gate
   /// there only turns a lagging filter into a dropped and re-started track,
   /// which resets its lag and flatters its error.
   Scalar gate_confirmed_threshold{};

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Two-point differencing initiation (SPEC section 7): a sensor that measures
+// Two-point differencing initiation (docs/tracking.md): a sensor that measures
 // position only (polar radar) needs two detections to infer velocity. From
 // plots z1 (time t1) and z2 (t2): position p2, velocity (p2 - p1)/dt,
 // acceleration 0; covariance from the first-order polar-to-Cartesian

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The underwater tracker of paper 003 (SPEC sections 3, 4, 6 and 9, UW-003):
+// The underwater tracker of paper 003 (docs/models.md, docs/tracking.md and docs/scenarios.md, UW-003):
 // one target, a few beacons, each frame a set of TOA arrivals labelled by
 // beacon and path (direct or seabed-reflected). It is the one Tracker
 // (tracking/tracker.hpp) composed for a labelled sensor:
@@ -304,8 +304,8 @@ class UnderwaterTracker {
 };
 
 /// Parameters of the underwater tracker in SI units (double), with the
-/// defaults of SPEC section 9, UW-003, and its "filter defaults that a check
-/// found workable". make_underwater_tracker() turns them into a Config.
+/// defaults of UW-003 and the filter defaults a check found workable
+/// (docs/scenarios.md). make_underwater_tracker() turns them into a Config.
 struct UnderwaterTrackerParams {
   static constexpr int kMaxBeacons = 8;  ///< 8 beacons x 2 paths = hal::kMaxToaArrivals.
   double beacons_m[kMaxBeacons][3] = {{0, 0, 0}, {2000, 0, 0}, {0, 2000, 0}, {2000, 2000, 0}};  ///< [x, y, depth], m.
@@ -314,7 +314,7 @@ struct UnderwaterTrackerParams {
   double sigma_toa_s = 3e-3;                  ///< TOA noise sigma, s.
   double accel_sigma_mps2 = 0.05;             ///< White acceleration per axis, m/s^2.
   /// c random walk: sigma after 1 s, m/s. UW-003's truth walks 0.3 m/s per
-  /// 1 s step (clamped to 1500 +- 2), i.e. 0.3 m/s per sqrt(s); SPEC 9's
+  /// 1 s step (clamped to 1500 +- 2), i.e. 0.3 m/s per sqrt(s); the check's
   /// "workable" 0.1 is a third of that (a ninth of the variance).
   double sound_speed_sigma_mps_per_sqrt_s = 0.3;
   double initial_sound_speed_mps = 1500.0;    ///< c of the first fix and of the filter start, m/s.

@@ -3,7 +3,7 @@
 // they arrive in (the wire format of frame_format.hpp carries exactly these
 // fields). Integer units at the HAL boundary keep a fixed-point build free of
 // run-time float conversions and make host replays bit-exact with a board
-// (SPEC section 2). One frame = one sensor look at one time; the three kinds
+// (docs/models.md). One frame = one sensor look at one time; the three kinds
 // share a header and differ in their item records, each with a fixed
 // maximum count.
 #pragma once

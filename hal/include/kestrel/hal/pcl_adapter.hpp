@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // Turns a decoded passive-radar (PCL) wire frame into the core's measurement
-// scan [Rb_m, dRb_mps] (SPEC section 4, bistatic; paper 002 eq. 2):
+// scan [Rb_m, dRb_mps] (docs/models.md, bistatic; paper 002 eq. 2):
 // Rb = bistatic_range_mm / 1000, dRb = -lambda * doppler_mhz / 1000, lambda
 // from the illuminator's carrier in the config (701 MHz: 0.4277 m). This is
 // the one place where PCL units change.
 //
-// Over-capacity rule (SPEC section 9): a frame may carry up to
+// Over-capacity rule (docs/scenarios.md): a frame may carry up to
 // kMaxPclCandidates (64); a scan holds kCapacity (32 for PCL-002). When the
 // frame carries more, exactly kCapacity candidates are kept, in frame order,
 // and the excess is dropped worst first by this order:

@@ -38,7 +38,7 @@ struct SonarBeacon {
 /// ToaArrival::beacon_id), the seabed depth and the arrival-time noise.
 struct SonarConfig {
   SonarBeacon beacons[kMaxSonarBeacons] = {
-      {0, 0, 0}, {2000000, 0, 0}, {0, 2000000, 0}, {2000000, 2000000, 0}};  ///< SPEC 9 UW-003 defaults.
+      {0, 0, 0}, {2000000, 0, 0}, {0, 2000000, 0}, {2000000, 2000000, 0}};  ///< UW-003's beacons (docs/scenarios.md).
   std::uint8_t beacon_count = 4;        ///< Beacons in use.
   std::uint32_t seabed_depth_mm = 150000;  ///< D, millimetres.
   std::uint32_t sigma_toa_ns = 3000000;    ///< Arrival-time noise sigma, nanoseconds.

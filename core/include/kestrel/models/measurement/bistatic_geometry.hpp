@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Bistatic geometry of a passive radar (SPEC section 4, bistatic; paper 002
+// Bistatic geometry of a passive radar (docs/models.md, bistatic; paper 002
 // section II): a stationary transmitter tx and receiver rx, a target at p
 // moving with velocity v. The bistatic range is the extra path length
 // Rb = |p - tx| + |p - rx| - |tx - rx| (0 on the baseline, the constant-Rb

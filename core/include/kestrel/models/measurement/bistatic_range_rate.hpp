@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Passive-radar (PCL) measurement of bistatic range and range rate (SPEC
-// section 4, bistatic; paper 002 eq. 2). A range-Doppler candidate gives
+// Passive-radar (PCL) measurement of bistatic range and range rate
+// (docs/models.md, bistatic; paper 002 eq. 2). A range-Doppler candidate gives
 // [Rb, fD]; the Doppler is converted to the range rate dRb = -lambda * fD
 // (lambda = c0 / f_carrier, 0.4277 m for 701 MHz DTV; a target closing in
 // bistatic range has a positive Doppler), so the measurement is [Rb, dRb],
@@ -24,7 +24,7 @@ S wavelength_m(S carrier_hz) {
   return ScalarTraits<S>::from_double(kSpeedOfLightMps) / carrier_hz;
 }
 
-/// Bistatic range rate from Doppler (SPEC section 4): dRb = -lambda * fD, m/s.
+/// Bistatic range rate from Doppler (docs/models.md): dRb = -lambda * fD, m/s.
 /// @param doppler_hz fD, Hz; positive for a target closing in bistatic range.
 /// @param lambda_m carrier wavelength, m.
 template <class S>

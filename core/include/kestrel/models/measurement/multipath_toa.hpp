@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Time of arrival with multipath at a set of beacons (SPEC section 4, "TOA
+// Time of arrival with multipath at a set of beacons (docs/models.md, "TOA
 // with multipath"; paper 003 eq. 1, 6 and 7). Each beacon i at b_i hears the
 // target at p twice: the direct path t_i = |p - b_i| / c, and the
 // seabed-reflected path, modelled by the image source mirrored across the

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Monostatic 2D radar at the origin measuring range and bearing (SPEC
-// section 4; paper 000 eq. 3-4): h(X) = [sqrt(x^2+y^2), atan2(y, x)],
+// Monostatic 2D radar at the origin measuring range and bearing
+// (docs/models.md; paper 000 eq. 3-4): h(X) = [sqrt(x^2+y^2), atan2(y, x)],
 // R = diag(sr^2, sb^2). Bearing is counter-clockwise from +x. residual()
 // is the only place a bearing innovation is wrapped to (-pi, pi].
 // Templated on the motion model only to read where x and y sit in its state.

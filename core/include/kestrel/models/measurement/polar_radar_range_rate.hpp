@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Monostatic 2D radar at the origin measuring range, bearing and range rate
-// (SPEC section 4's polar radar plus the radial velocity a pulse-Doppler
+// (the polar radar of docs/models.md plus the radial velocity a pulse-Doppler
 // radar reports; the wire plot's range_rate_mmps, docs/range_rate.md):
 // h(X) = [r, atan2(y, x), (x vx + y vy) / r], r = sqrt(x^2 + y^2),
 // R = diag(sr^2, sb^2, srr^2), range rate positive opening. The range-rate

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Constant velocity in bistatic range (SPEC section 3, CV-1D bistatic; paper
+// Constant velocity in bistatic range (docs/models.md, CV-1D bistatic; paper
 // 002 eq. 1 and 3): state x = [Rb dRb]^T, the bistatic range (m) and its rate
 // (m/s), F(dt) = [[1, dt], [0, 1]]. The process noise is the discrete white
-// noise acceleration model on Rb (the CV-2D per-axis block of SPEC section 3):
+// noise acceleration model on Rb (the CV-2D per-axis block of docs/models.md):
 // Q(dt) = sa^2 * [[dt^4/4, dt^3/2], [dt^3/2, dt^2]], sa the standard deviation
 // of d2Rb/dt2 over one step. Paper 002 leaves Q unstated ("set from the
-// observed variation"); SPEC section 9 fixes sa of about 4 m/s^2.
+// observed variation"); PCL-002 uses sa of about 4 m/s^2 (docs/pcl.md).
 #pragma once
 
 #include "kestrel/math/eigen.hpp"

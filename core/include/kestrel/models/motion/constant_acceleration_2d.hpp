@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Constant-acceleration motion in the plane with white-jerk process noise
-// (SPEC section 3, CA-2D; R2-AEKF paper 000, section 2-1). State
+// (docs/models.md, CA-2D; R2-AEKF paper 000, section 2-1). State
 // X = [x vx ax y vy ay]^T: two independent 3-state axes, so F and Q are
 // block-diagonal blkdiag(F1, F1), blkdiag(Q1D, Q1D). The per-axis blocks are
 // public because the adaptive filter (R2-AEKF) scales Q per axis.

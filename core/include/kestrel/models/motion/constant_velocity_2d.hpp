@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Constant-velocity motion in the plane with discrete white-noise
-// acceleration (DWNA) process noise (SPEC section 3, CV-2D; the target model
+// acceleration (DWNA) process noise (docs/models.md, CV-2D; the target model
 // of paper 001, section 2 and eq. 1). State X = [x vx y vy]^T: two
 // independent 2-state axes, F = blkdiag(F1, F1) with F1 = [[1, T], [0, 1]],
 // and Q = blkdiag(Q1D, Q1D) with Q1D = sa^2 * [[T^4/4, T^3/2], [T^3/2, T^2]]

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // Constant velocity in 3D with the sound speed as an extra random-walk state
-// (SPEC section 3, CV-3D + sound speed; paper 003 eq. 2 and 4-5). State
+// (docs/models.md, CV-3D + sound speed; paper 003 eq. 2 and 4-5). State
 // X = [x y z vx vy vz c]^T, depth z positive downward. Per axis the position
 // and velocity follow the discrete white-noise-acceleration model
 // (Q1D = sa^2 * [[T^4/4, T^3/2], [T^3/2, T^2]], the same form as CV-2D);
 // the effective sound speed c is a random walk whose variance grows by
 // qc * T (qc in (m/s)^2/s, i.e. a sigma of sqrt(qc) m/s per sqrt(s)).
 // The paper prints only "F for constant velocity" and an unnamed Q; these
-// two noise forms are the ones SPEC section 9 fixes for UW-003.
+// two noise forms are the project's choice (docs/underwater.md).
 #pragma once
 
 #include "kestrel/math/eigen.hpp"

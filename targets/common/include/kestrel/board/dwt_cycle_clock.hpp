@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // CycleClock on the ARMv7-M Data Watchpoint and Trace unit (Cortex-M3/M4/M7):
 // CYCCNT counts core clock cycles in 32 bits and now_cycles() extends it to
-// 64 bits by counting the wraps it observes (SPEC section 8: the board's
+// 64 bits by counting the wraps it observes (docs/tracking.md: the board's
 // cycle counter feeds the runner's step statistics).
 //
 // A wrap is seen only if now_cycles() runs at least once per 2^32 cycles

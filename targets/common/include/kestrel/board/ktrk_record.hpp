@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // KTRK v2: the binary track record every board's sink emits, so a consumer
 // reads the same bytes from a Cortex-M UART, a RISC-V Linux process or a
-// file (SPEC section 8: the same core and the same wire formats on every
-// board). Each track report becomes one fixed-size record; a record is never
+// file (the same core and the same wire formats on every board;
+// docs/architecture.md). Each track report becomes one fixed-size record; a record is never
 // split, so a consumer can always resynchronise on the magic.
 //
 // Binary rather than text: 64 bytes per track instead of ~120 characters,
@@ -10,7 +10,7 @@
 // fields in the same units as the wire frames, and a CRC-32 so the host
 // can tell a damaged record from a real jump.
 //
-// v2 (issue 15) carries any state layout: a layout code says what the state
+// v2 carries any state layout: a layout code says what the state
 // components mean, so a board bound to a bistatic (PCL) tracker emits the
 // same record as a radar board. v1 was Cartesian x/y only (56 bytes, fixed
 // x, y, vx, vy); no board writes it any more, tools/ktrk_decode.py still
@@ -53,7 +53,7 @@
 // precision (v1 went through float, which resolves 1 mm only up to 16.7 km:
 // too coarse for bistatic ranges of up to 200 km, and a double tracker
 // gains nothing from it); NaN is written as the field's minimum (INT32_MIN, or the unsigned maximum
-// for unsigned fields). A fixed-point tracker (issue 8) is encoded with
+// for unsigned fields). A fixed-point tracker is encoded with
 // integer arithmetic only, rounding half away from zero as the float path
 // does; a saturated value is written as the field's end of its sign.
 #pragma once

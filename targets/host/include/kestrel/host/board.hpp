@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The host board: which concrete type plays each HAL role (STYLE "targets/"),
+// The host board: which concrete type plays each HAL role (docs/porting.md),
 // and the capacities of the radar tracker built on the host. A board main
 // (targets/host/main.cpp) and kestrel-sim both take their types from here,
 // so the simulator runs exactly the loop a board runs:

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // CsvTrackSink: the host's TrackSink (hal/sink.hpp) writing the track CSV of
-// SPEC section 11, one row per reported track per frame:
+// docs/host_sim.md, one row per reported track per frame:
 //   time_s,track_id,x_m,y_m,vx_mps,vy_mps,p_xx,p_xy,p_yy,
 //   status,age,hits,misses,associated,nis,ax_mps2,ay_mps2
-// The first nine columns are the ones SPEC requires; the rest are the track
+// The first nine columns are the required ones (docs/host_sim.md); the rest are the track
 // bookkeeping and last innovation statistics. Numbers are printed with
 // enough digits to round-trip a double; NaN (no association, no
 // acceleration state) is an empty cell.

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // TrackRow: one track report flattened to plain doubles in SI units, whatever
-// the filter's scalar and state layout. It is the row of the track CSV (SPEC
-// section 11) and what kestrel-sim scores, so both read a report the same
+// the filter's scalar and state layout. It is the row of the track CSV
+// (docs/host_sim.md) and what kestrel-sim scores, so both read a report the same
 // way. Quantities the motion model does not carry (acceleration in a CV
 // model) are NaN and written as empty CSV cells.
 #pragma once
