@@ -301,16 +301,15 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   auto confirmed = [&] { return warmed(fresh(), s1, kWarm); };
   if (confirmed()->reports().size() != 1) throw std::runtime_error("bench: S1 track not confirmed after warm-up");
 
-  // gated_out: the next plot lands 0.5 rad off the track: outside its gate
-  // and the robust gate's outer one (the qj 160 track's outer gate reaches
-  // further than 0.1 rad at this range), it starts a seed instead.
+  // gated_out: the next plot lands 0.1 rad off the track: outside its gate,
+  // it starts a seed instead.
   {
     TrackerPath<Tracker> p;
     p.name = "gated_out";
-    p.description = "1 confirmed track, its plot 0.5 rad off: predict, gate miss, seed, coast, report";
+    p.description = "1 confirmed track, its plot 0.1 rad off: predict, gate miss, seed, coast, report";
     p.start = confirmed();
     FrameSi f = s1[kWarm];
-    f.plots[0].bearing_rad += 0.5;
+    f.plots[0].bearing_rad += 0.1;
     p.scans.push_back(to_scan<Tracker>(f));
     p.restart = true;
     p.reps = 20;

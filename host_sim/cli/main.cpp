@@ -29,7 +29,7 @@ void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
                 "Without --gate-d2: gate confirmed tracks as a board does (its chi-square gate) instead of not at all");
   cmd->add_option("--robust-gate", o.robust_gate_factor,
                   "With the board's gate: take plots up to this factor x the gate's d2 with a shrunk innovation "
-                  "(0: off; default 25, docs/robustness.md)");
+                  "(default 0: off; 25 for a sensor without clutter, docs/robustness.md)");
   cmd->add_option("--imm", o.imm,
                   "IMM parameter override KEY=VALUE, repeatable (filters imm, imm-f32; keys in docs/imm.md)");
 }

@@ -8,9 +8,9 @@ cortex_m4f_image_has_no_heap) in QEMU's STM32F405 machine
 (seed 7, the wire format of docs/wire_format.md) into the USART the board
 reads, captures the KTRK records it writes back, decodes them with
 tools/ktrk_decode.py and compares them record for record with the host's
-replay of the same stream: `kestrel-sim replay -f ekf-ca-f32`, the board's
-tracker (float EKF-CA, the board's 0.999 gate and robust gate, replay's
-default) on the host, for the state; and kestrel-host-replay (the host board, double) for
+replay of the same stream: `kestrel-sim replay -f ekf-ca-f32 --gate-d2
+13.816`, the board's tracker (float EKF-CA, the board's 0.999 gate) on the
+host, for the state; and kestrel-host-replay (the host board, double) for
 the frame times, track ids and statuses, which must be the same too.
 
 Serial mapping: QEMU gives the STM32F405's USARTs the -serial options in
@@ -233,7 +233,7 @@ def main():
     float_dir = os.path.join(args.work, "host-float")
     for cmd in ([args.sim, "generate", "--scenario", args.scenario, "--seed", args.seed, "--out", stream_path],
                 [args.host_replay, stream_path, host_csv],
-                [args.sim, "replay", "--stream", stream_path, "-f", "ekf-ca-f32", "--no-plots",
+                [args.sim, "replay", "--stream", stream_path, "-f", "ekf-ca-f32", "--gate-d2", "13.816", "--no-plots",
                  "-o", float_dir]):
         r = subprocess.run(cmd, capture_output=True, text=True, timeout=120)
         if r.returncode != 0:

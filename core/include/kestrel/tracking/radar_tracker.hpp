@@ -28,10 +28,11 @@ struct RadarTrackerParams {
   double max_position_variance_m2 = 1.0e6;     ///< Delete a track past a 1 km position sigma.
   GateProbability gate = GateProbability::k999;  ///< Gate of confirmed and tentative tracks.
   /// Confirmed tracks take plots up to this factor times the gate's d2 with
-  /// a shrunk innovation (TrackerConfig::robust_gate_factor): 25, an outer
-  /// radius of 5 gate radii, follows a sensor up to 5x its nominal sigma
-  /// and still refuses a plot hundreds of metres off (docs/robustness.md).
-  double robust_gate_factor = 25.0;
+  /// a shrunk innovation (TrackerConfig::robust_gate_factor). 0, off, by
+  /// default: in clutter the outer gate takes false plots whenever the
+  /// target's is missing. 25 (5 gate radii) suits a sensor without clutter
+  /// whose noise may grow 5-fold for a while (docs/robustness.md).
+  double robust_gate_factor = 0.0;
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
   std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
   std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
