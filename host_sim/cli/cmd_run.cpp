@@ -40,6 +40,7 @@ int cmd_run(const RunOptions& o) {
   const ScenarioReport report = run_scenario_report(scenario, o.filter.filter, config, dir, o.plots);
   print_table_header(stdout);
   print_table_row(stdout, report.row);
+  print_continuity(stdout, report.row);
   print_files(dir, report.row.filter, report.plotted);
   if (!o.asterix_out.path.empty()) {
     // Run 0 again, its reports through a Cat062Sink as well: the run is

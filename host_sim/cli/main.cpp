@@ -25,6 +25,11 @@ void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
   cmd->add_option("--qj", o.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
   cmd->add_option("--gate-d2", o.confirmed_gate_d2,
                   "Gate of confirmed tracks, d2 units (e.g. 13.8 = 0.999 for 2 dof; default: ungated)");
+  cmd->add_flag("--board-gate", o.board_gate,
+                "Without --gate-d2: gate confirmed tracks as a board does (its chi-square gate) instead of not at all");
+  cmd->add_option("--robust-gate", o.robust_gate_factor,
+                  "With the board's gate: take plots up to this factor x the gate's d2 with a shrunk innovation "
+                  "(default 0: off; 25 for a sensor without clutter, docs/robustness.md)");
   cmd->add_option("--imm", o.imm,
                   "IMM parameter override KEY=VALUE, repeatable (filters imm, imm-f32; keys in docs/imm.md)");
 }

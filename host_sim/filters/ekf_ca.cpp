@@ -37,7 +37,7 @@ host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& 
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
-  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
+  apply_gate_options<Scalar>(options, config);
   return host::BoardRadarTracker<EkfCa<Scalar>>(EkfCa<Scalar>(motion, radar), init, config);
 }
 

@@ -28,7 +28,7 @@ host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& option
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   const TwoPointInitiator<CaMotion<Q>, CaPolarRadar<Q>> init{radar, s.max_speed_mps, s.init_accel_sigma_mps2};
   TrackerConfig<Q, 2> config = radar_tracker_config<Q>(p, s);
-  config.gate_confirmed_threshold = confirmed_gate_threshold<Q>(options);
+  apply_gate_options<Q>(options, config);
   return host::BoardRadarTracker<EkfCa<Q>>(EkfCa<Q>(motion, radar), init, config);
 }
 

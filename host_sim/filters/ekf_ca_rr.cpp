@@ -51,7 +51,7 @@ host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOpti
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadarRangeRate<Scalar>> init{radar, s.radar.max_speed_mps,
                                                                                 s.radar.init_accel_sigma_mps2};
   TrackerConfig<Scalar, 3> config = radar_range_rate_tracker_config<Scalar>(p, s);
-  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
+  apply_gate_options<Scalar>(options, config);
   return host::BoardRadarTracker<EkfCaRr<Scalar>>(EkfCaRr<Scalar>(motion, radar), init, config);
 }
 

@@ -12,6 +12,7 @@
 #include "filters/imm_filters.hpp"
 #include "filters/r2aekf_filters.hpp"
 #include "filters/radar_filter_family.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
 
 namespace kestrel::sim {
 
@@ -56,18 +57,32 @@ const FilterEntry kFilters[] = {
 
 std::span<const FilterEntry> filter_registry() { return kFilters; }
 
+namespace {
+// The robust gate's factor that acts: only with the board's gate.
+double robust_factor(const FilterOptions& options) {
+  if (options.confirmed_gate_d2.has_value() || !options.board_gate) return 0.0;
+  return options.robust_gate_factor.value_or(RadarTrackerParams{}.robust_gate_factor);
+}
+}  // namespace
+
 std::string gate_label(const FilterOptions& options) {
   if (options.confirmed_gate_d2.has_value()) {
     char text[48];
     std::snprintf(text, sizeof text, ", gate d2 %g", *options.confirmed_gate_d2);
     return text;
   }
-  return options.board_gate ? ", board gate" : "";
+  if (!options.board_gate) return "";
+  const double factor = robust_factor(options);
+  if (!(factor > 1.0)) return ", board gate";
+  char text[48];
+  std::snprintf(text, sizeof text, ", board gate (robust x%g)", factor);
+  return text;
 }
 
 void add_gate_parameters(const FilterOptions& options, std::map<std::string, double>& parameters) {
   parameters["confirmed_gate_d2"] = options.confirmed_gate_d2.value_or(std::numeric_limits<double>::infinity());
   parameters["board_gate"] = !options.confirmed_gate_d2.has_value() && options.board_gate ? 1.0 : 0.0;
+  parameters["robust_gate_factor"] = robust_factor(options);
 }
 
 const FilterEntry& find_filter(std::string_view name) {

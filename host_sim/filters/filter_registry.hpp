@@ -33,6 +33,9 @@ struct FilterOptions {
   /// at all. `replay` sets it: recorded data has outliers, and an ungated
   /// track follows them.
   bool board_gate = false;
+  /// With the board's gate: TrackerConfig::robust_gate_factor (0 turns the
+  /// robust gate off). Unset: the radar tracker's default.
+  std::optional<double> robust_gate_factor;
   /// Parameter overrides of the IMM filters, KEY=VALUE each
   /// (filters/imm_filters.hpp lists the keys); other filters ignore them.
   std::vector<std::string> imm;
@@ -48,11 +51,24 @@ Scalar confirmed_gate_threshold(const FilterOptions& options) {
   return T::max_value();
 }
 
-/// The gate in a filter's label: ", gate d2 13.8", ", board gate" or "".
+/// The gate options into a tracker configuration built from the board's
+/// defaults: the confirmed gate's threshold and, if given, the robust
+/// gate's factor (which acts with the board's gate only).
+template <class Scalar, class Config>
+void apply_gate_options(const FilterOptions& options, Config& config) {
+  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
+  if (options.robust_gate_factor.has_value()) {
+    config.robust_gate_factor = ScalarTraits<Scalar>::from_double(*options.robust_gate_factor);
+  }
+}
+
+/// The gate in a filter's label: ", gate d2 13.8", ", board gate (robust x25)"
+/// or "".
 std::string gate_label(const FilterOptions& options);
 
 /// The gate parameters of summary.json: confirmed_gate_d2 (infinity when
-/// ungated or when the board's gate applies) and board_gate (0 or 1).
+/// ungated or when the board's gate applies), board_gate (0 or 1) and
+/// robust_gate_factor (0 unless the board's gate applies).
 void add_gate_parameters(const FilterOptions& options, std::map<std::string, double>& parameters);
 
 /// The parameters a run actually used, for summary.json and the table.

@@ -119,7 +119,7 @@ host::BoardRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& 
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(tp);
-  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
+  apply_gate_options<Scalar>(options, config);
   return host::BoardRadarTracker<RadarImm<Scalar>>(prototype, init, config);
 }
 

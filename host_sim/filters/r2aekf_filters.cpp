@@ -61,7 +61,7 @@ host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, co
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
-  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
+  apply_gate_options<Scalar>(options, config);
   return host::BoardRadarTracker<Filter>(prototype, init, config);
 }
 

@@ -38,7 +38,7 @@ StreamRunResult run_family(StreamInput stream, const FilterOptions& options, std
   const TwoPointInitiator<Motion, Radar> init{radar, T::from_double(p.max_speed_mps),
                                               T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
-  config.gate_confirmed_threshold = confirmed_gate_threshold<Scalar>(options);
+  apply_gate_options<Scalar>(options, config);
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(Filter(motion, radar), init, config);
   return run_stream(*tracker, std::move(stream), budget_ns);

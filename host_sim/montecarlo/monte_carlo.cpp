@@ -2,6 +2,8 @@
 #include "montecarlo/monte_carlo.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "pipeline/worker_pool.hpp"
@@ -26,6 +28,7 @@ RunRecord record_of(const RunDetail& d) {
     if (last_id != 0 && s.estimate->track_id != last_id) ++r.track_switches;
     last_id = s.estimate->track_id;
   }
+  r.continuity = compute_track_continuity(on_target_tracks(d));
   return r;
 }
 
@@ -48,7 +51,8 @@ MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& fi
 MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t budget_ns) {
   MonteCarloSummary s;
   s.runs = runs.size();
-  std::vector<double> rmse, peak, nees, nis, loss, recovery, switches;
+  std::vector<double> rmse, peak, nees, nis, loss, recovery, switches, held, episodes, ids;
+  s.worst_held_fraction = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::uint64_t> all_steps;
   for (const RunRecord& r : runs) {
     rmse.push_back(r.metrics.rmse_m);
@@ -57,6 +61,14 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
     nis.push_back(r.metrics.nis);
     loss.push_back(r.metrics.track_loss_s);
     switches.push_back(static_cast<double>(r.track_switches));
+    held.push_back(r.continuity.held_fraction);
+    const double f = r.continuity.held_fraction;
+    if (std::isfinite(f) && (std::isnan(s.worst_held_fraction) || f < s.worst_held_fraction)) {
+      s.worst_held_fraction = f;
+    }
+    episodes.push_back(static_cast<double>(r.metrics.episodes.size()));
+    ids.push_back(static_cast<double>(r.continuity.track_ids_on_target));
+    s.max_track_ids_on_target = std::max(s.max_track_ids_on_target, r.continuity.track_ids_on_target);
     // docs/metrics.md: recovery is averaged over the runs that had an episode.
     if (!r.metrics.episodes.empty()) recovery.push_back(r.metrics.recovery_s);
     else ++s.runs_without_loss;
@@ -73,6 +85,9 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
   s.track_loss_s = mean_ci95(loss);
   s.recovery_s = mean_ci95(recovery);
   s.track_switches = mean_ci95(switches);
+  s.held_fraction = mean_ci95(held);
+  s.loss_episodes = mean_ci95(episodes);
+  s.track_ids_on_target = mean_ci95(ids);
   s.timing = summarise_step_times(all_steps, budget_ns);
   return s;
 }

@@ -34,6 +34,7 @@ struct RunRecord {
   std::size_t max_confirmed_tracks = 0;  ///< Most confirmed tracks in one scored frame.
   std::size_t track_switches = 0;      ///< Scored frames whose track id differs from the previous scored one.
   std::size_t frames_not_ok = 0;       ///< Frames whose final status was not kOk.
+  TrackContinuity continuity;          ///< One track on the target from confirmation on?
 };
 
 struct MonteCarloResult {
@@ -51,6 +52,12 @@ struct MonteCarloSummary {
   std::size_t max_confirmed_tracks = 0;
   MeanCi track_switches;              ///< Changes of the scored track's id per run.
   std::size_t frames_not_ok = 0;
+  // Track continuity (metrics/track_continuity.hpp), per run then over runs.
+  MeanCi held_fraction;               ///< Frames after confirmation with one confirmed track on target.
+  double worst_held_fraction = 0.0;   ///< Lowest held fraction of any run (NaN if none).
+  MeanCi loss_episodes;               ///< Lost episodes per run.
+  MeanCi track_ids_on_target;         ///< Distinct confirmed track ids within L per run.
+  std::size_t max_track_ids_on_target = 0;
   StepTiming timing;                  ///< Over every step of every run.
 };
 

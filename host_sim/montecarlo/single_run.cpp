@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "montecarlo/single_run.hpp"
 
+#include <cmath>
 #include <utility>
 
 #include "stream/quantise.hpp"
@@ -15,6 +16,20 @@ RunMetrics metrics_of(const std::vector<ScoredStep>& steps, double period_s, dou
   return compute_run_metrics(errors, period_s, loss_threshold_m);
 }
 
+std::vector<OnTargetTracks> on_target_tracks(const RunDetail& d) {
+  std::vector<OnTargetTracks> out;
+  out.reserve(d.steps.size());
+  for (const ScoredStep& s : d.steps) {
+    OnTargetTracks on;
+    for (const host::TrackRow& row : d.stream.frames[s.k].tracks) {
+      if (!row.confirmed) continue;
+      if (std::hypot(row.x_m - s.truth.x_m, row.y_m - s.truth.y_m) <= d.loss_threshold_m) on.ids.push_back(row.track_id);
+    }
+    out.push_back(std::move(on));
+  }
+  return out;
+}
+
 RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> frames,
                           std::vector<TruthSample> truth, const FilterEntry& filter, const FilterOptions& options,
                           std::uint64_t budget_ns, const ScoringConfig& scoring, double period_s,
@@ -25,6 +40,7 @@ RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> fram
   d.stream = filter.run(std::move(stream), options, budget_ns);
   d.steps = score_run(d.stream, d.truth, scoring);
   d.metrics = metrics_of(d.steps, period_s, loss_threshold_m);
+  d.loss_threshold_m = loss_threshold_m;
   return d;
 }
 

@@ -11,6 +11,7 @@
 #include "filters/filter_registry.hpp"
 #include "metrics/run_metrics.hpp"
 #include "metrics/scoring.hpp"
+#include "metrics/track_continuity.hpp"
 #include "pipeline/stream_run_result.hpp"
 #include "scenarios/scenario.hpp"
 
@@ -23,6 +24,7 @@ struct RunDetail {
   StreamRunResult stream;                ///< Per-frame tracker output.
   std::vector<ScoredStep> steps;         ///< Scored frames.
   RunMetrics metrics;
+  double loss_threshold_m = 0.0;         ///< L the run was scored with, m.
 };
 
 /// Run `filter` over `stream` (a wire stream or a CAT048 recording, which
@@ -40,6 +42,10 @@ RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> fram
 RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const FilterEntry& filter,
                             const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring,
                             std::optional<hal::asterix::Cat062Source> cat062 = std::nullopt);
+
+/// The confirmed tracks within `loss_threshold_m` of the truth at each
+/// scored step (the input of compute_track_continuity()).
+std::vector<OnTargetTracks> on_target_tracks(const RunDetail& detail);
 
 /// Run metrics of scored steps.
 RunMetrics metrics_of(const std::vector<ScoredStep>& steps, double period_s, double loss_threshold_m);

@@ -17,6 +17,14 @@ std::string interval(const MeanCi& m, const char* fmt) {
   std::snprintf(buf, sizeof buf, "%s [%s, %s]", mean, lo, hi);
   return buf;
 }
+// The same in per cent, two decimals.
+std::string percent(const MeanCi& m) {
+  MeanCi p = m;
+  p.mean *= 100.0;
+  p.ci95_low *= 100.0;
+  p.ci95_high *= 100.0;
+  return interval(p, "%.2f");
+}
 }  // namespace
 
 void print_table_header(std::FILE* out) {
@@ -45,6 +53,17 @@ void print_table_row(std::FILE* out, const TableRow& r) {
                  "confirmed tracks in one frame (the nearest is scored)\n",
                  "", "", s.track_switches.mean, s.max_confirmed_tracks);
   }
+}
+
+void print_continuity(std::FILE* out, const TableRow& r) {
+  const MonteCarloSummary& s = r.summary;
+  if (!std::isfinite(s.held_fraction.mean)) return;
+  std::fprintf(out,
+               "%-8s %-11s        continuity: one confirmed track on target in %s %% of frames after confirmation "
+               "(worst run %.2f %%); loss episodes per run %s; track ids on target per run %s (max %zu)\n",
+               "", "", percent(s.held_fraction).c_str(), 100.0 * s.worst_held_fraction,
+               interval(s.loss_episodes, "%.3f").c_str(), interval(s.track_ids_on_target, "%.3f").c_str(),
+               s.max_track_ids_on_target);
 }
 
 void print_timing(std::FILE* out, const std::string& what, const StepTiming& t) {

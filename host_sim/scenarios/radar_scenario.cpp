@@ -52,6 +52,18 @@ RadarNoise paper000_range_rate_radar_noise() {
   return n;
 }
 
+RadarNoise paper000_outlier_radar_noise() {
+  RadarNoise n = paper000_radar_noise();
+  n.range_outliers = kOutliers;
+  return n;
+}
+
+RadarNoise paper000_burst_radar_noise() {
+  RadarNoise n = paper000_radar_noise();
+  n.windows = {NoiseWindow{kNoiseBurstBeginS, kNoiseBurstEndS, kNoiseBurstScale, kNoiseBurstScale}};
+  return n;
+}
+
 RadarScenario::RadarScenario(ScenarioInfo info, std::vector<TruthSample> truth, RadarNoise noise)
     : info_(std::move(info)), truth_(std::move(truth)), noise_(std::move(noise)) {}
 
@@ -61,6 +73,9 @@ ScenarioRun RadarScenario::generate(std::uint64_t seed) const {
   // noise are the same bits as in the variant without range rate (s1 and
   // s1rr with one seed differ only by the range rate: paired comparisons).
   Rng rate_rng(seed ^ 0x5261'6E67'6552'6174ULL);  // "RangeRat"
+  // Outliers likewise: s1 and s1-outliers with one seed differ only in the
+  // outlier plots.
+  Rng outlier_rng(seed ^ 0x4F75'746C'6965'7273ULL);  // "Outliers"
   ScenarioRun run;
   run.truth = truth_;
   run.frames.reserve(truth_.size());
@@ -73,6 +88,15 @@ ScenarioRun RadarScenario::generate(std::uint64_t seed) const {
     RadarPlotSi plot;
     plot.range_m = std::hypot(s.x_m, s.y_m) + noise_.range_sigma_at(s.t_s) * n_range;
     plot.bearing_rad = wrap_pi(std::atan2(s.y_m, s.x_m) + noise_.bearing_sigma_at(s.t_s) * n_bearing);
+    if (noise_.range_outliers.has_value()) {
+      // Three draws per plot whether or not it is an outlier, so which plots
+      // are outliers depends only on the seed and the frame index.
+      const RangeOutliers& o = *noise_.range_outliers;
+      const bool outlier = outlier_rng.uniform() < o.probability;
+      const double magnitude = outlier_rng.uniform(o.offset_min_m, o.offset_max_m);
+      const double sign = outlier_rng.uniform() < 0.5 ? -1.0 : 1.0;
+      if (outlier) plot.range_m += sign * magnitude;
+    }
     if (noise_.sigma_range_rate_mps.has_value()) {
       const double r = std::hypot(s.x_m, s.y_m);
       plot.range_rate_mps = (s.x_m * s.vx_mps + s.y_m * s.vy_mps) / r + *noise_.sigma_range_rate_mps * rate_rng.normal();

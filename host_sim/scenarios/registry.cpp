@@ -19,6 +19,10 @@ const ScenarioEntry kScenarios[] = {
     {"s2n", &make_s2n},
     {"s1rr", &make_s1rr},
     {"s2rr", &make_s2rr},
+    {"s1-outliers", &make_s1_outliers},
+    {"s2-outliers", &make_s2_outliers},
+    {"s1-burst", &make_s1_burst},
+    {"s2-burst", &make_s2_burst},
 };
 }  // namespace
 

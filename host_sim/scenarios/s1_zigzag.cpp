@@ -87,3 +87,19 @@ std::unique_ptr<Scenario> make_s1rr() {
 }
 
 }  // namespace kestrel::sim
+
+namespace kestrel::sim {
+
+std::unique_ptr<Scenario> make_s1_outliers() {
+  return std::make_unique<RadarScenario>(
+      s1_info("s1-outliers", "S1 with 3 % of plots off in range by 300-800 m (either sign)"),
+      s1_trajectory(), paper000_outlier_radar_noise());
+}
+
+std::unique_ptr<Scenario> make_s1_burst() {
+  return std::make_unique<RadarScenario>(
+      s1_info("s1-burst", "S1 with range and bearing sigma x3 in [50,80) s"),
+      s1_trajectory(), paper000_burst_radar_noise());
+}
+
+}  // namespace kestrel::sim

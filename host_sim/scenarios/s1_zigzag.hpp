@@ -20,5 +20,11 @@ std::unique_ptr<Scenario> make_s1n();
 /// S1 with a range rate on every plot (sigma kRangeRateSigmaMps); range and
 /// bearing noise equal to S1 seed for seed.
 std::unique_ptr<Scenario> make_s1rr();
+/// S1 with gross range outliers (kOutliers); other noise equal to S1 seed
+/// for seed.
+std::unique_ptr<Scenario> make_s1_outliers();
+/// S1 with a noise burst (range and bearing sigma x kNoiseBurstScale on
+/// [kNoiseBurstBeginS, kNoiseBurstEndS)); unit variates equal to S1 seed for seed.
+std::unique_ptr<Scenario> make_s1_burst();
 
 }  // namespace kestrel::sim

@@ -129,3 +129,19 @@ std::unique_ptr<Scenario> make_s2rr() {
 }
 
 }  // namespace kestrel::sim
+
+namespace kestrel::sim {
+
+std::unique_ptr<Scenario> make_s2_outliers() {
+  return std::make_unique<RadarScenario>(
+      s2_info("s2-outliers", "S2 with 3 % of plots off in range by 300-800 m (either sign)"),
+      s2_trajectory(kPeriodS, kSteps), paper000_outlier_radar_noise());
+}
+
+std::unique_ptr<Scenario> make_s2_burst() {
+  return std::make_unique<RadarScenario>(
+      s2_info("s2-burst", "S2 with range and bearing sigma x3 in [50,80) s"),
+      s2_trajectory(kPeriodS, kSteps), paper000_burst_radar_noise());
+}
+
+}  // namespace kestrel::sim

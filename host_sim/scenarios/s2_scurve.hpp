@@ -30,5 +30,11 @@ std::unique_ptr<Scenario> make_s2n();
 /// S2 with a range rate on every plot (sigma kRangeRateSigmaMps); range and
 /// bearing noise equal to S2 seed for seed.
 std::unique_ptr<Scenario> make_s2rr();
+/// S2 with gross range outliers (kOutliers); other noise equal to S2 seed
+/// for seed.
+std::unique_ptr<Scenario> make_s2_outliers();
+/// S2 with a noise burst (range and bearing sigma x kNoiseBurstScale on
+/// [kNoiseBurstBeginS, kNoiseBurstEndS)); unit variates equal to S2 seed for seed.
+std::unique_ptr<Scenario> make_s2_burst();
 
 }  // namespace kestrel::sim

@@ -62,6 +62,7 @@ TrackerConfig<Scalar, 3> radar_range_rate_tracker_config(const RadarRangeRateTra
   c.gate_confirmed = rb.gate_confirmed;
   c.gate_tentative = rb.gate_tentative;
   c.gate_confirmed_threshold = rb.gate_confirmed_threshold;
+  c.robust_gate_factor = rb.robust_gate_factor;
   c.confirm_m = rb.confirm_m;
   c.confirm_n = rb.confirm_n;
   c.max_coast_misses = rb.max_coast_misses;

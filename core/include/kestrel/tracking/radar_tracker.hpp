@@ -27,6 +27,12 @@ struct RadarTrackerParams {
   double max_range_m = 500000.0;               ///< Plots beyond this are out of range.
   double max_position_variance_m2 = 1.0e6;     ///< Delete a track past a 1 km position sigma.
   GateProbability gate = GateProbability::k999;  ///< Gate of confirmed and tentative tracks.
+  /// Confirmed tracks take plots up to this factor times the gate's d2 with
+  /// a shrunk innovation (TrackerConfig::robust_gate_factor). 0, off, by
+  /// default: in clutter the outer gate takes false plots whenever the
+  /// target's is missing. 25 (5 gate radii) suits a sensor without clutter
+  /// whose noise may grow 5-fold for a while (docs/robustness.md).
+  double robust_gate_factor = 0.0;
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
   std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
   std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
@@ -61,6 +67,7 @@ struct RadarTrackerScalars {
   Scalar init_accel_sigma_mps2;     ///< Initial acceleration sigma, m/s^2.
   Scalar max_range_m;               ///< Largest valid range, m.
   Scalar max_position_variance_m2;  ///< Deletion limit on var(x) + var(y), m^2.
+  Scalar robust_gate_factor;        ///< Outer gate / chi-square gate, in d2.
 };
 
 template <class Scalar>
@@ -69,7 +76,8 @@ constexpr RadarTrackerScalars<Scalar> radar_tracker_scalars(const RadarTrackerPa
   return RadarTrackerScalars<Scalar>{T::from_double(p.sigma_range_m), T::from_double(p.sigma_bearing_rad),
                                      T::from_double(p.qj), T::from_double(p.max_speed_mps),
                                      T::from_double(p.init_accel_sigma_mps2), T::from_double(p.max_range_m),
-                                     T::from_double(p.max_position_variance_m2)};
+                                     T::from_double(p.max_position_variance_m2),
+                                     T::from_double(p.robust_gate_factor)};
 }
 
 /// Tracker-level configuration: the integer fields of p, the real ones from s.
@@ -86,6 +94,7 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const
   c.max_forward_jump_us = p.max_forward_jump_us;
   c.resync_frames = p.resync_frames;
   c.max_position_variance_m2 = s.max_position_variance_m2;
+  c.robust_gate_factor = s.robust_gate_factor;
   c.z_min << Scalar(0), -T::pi();
   c.z_max << s.max_range_m, T::pi();
   return c;

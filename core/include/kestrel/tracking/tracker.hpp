@@ -58,6 +58,7 @@
 #include "kestrel/association/chi_square.hpp"
 #include "kestrel/association/gate.hpp"
 #include "kestrel/association/nearest_neighbour.hpp"
+#include "kestrel/association/robust_gate.hpp"
 #include "kestrel/filters/channels.hpp"
 #include "kestrel/math/finite.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
@@ -131,6 +132,12 @@ struct TrackerConfig {
   /// there only turns a lagging filter into a dropped and re-started track,
   /// which resets its lag and flatters its error.
   Scalar gate_confirmed_threshold{};
+  /// Robust gating of confirmed tracks (association/robust_gate.hpp) when
+  /// above 1 and the chi-square gate applies (no gate_confirmed_threshold):
+  /// plots up to this factor times the gate's d2 are taken with their
+  /// innovation shrunk to the gate's edge. 0: off, a plot beyond the gate is
+  /// a miss. For single-plot associators (NN, GNN); PDA weighs its own gate.
+  Scalar robust_gate_factor{};
   std::uint8_t confirm_m = 2;          ///< MOfN: confirm with M associations ...
   std::uint8_t confirm_n = 3;          ///< ... in the first N frames (N <= 8).
   std::uint16_t max_coast_misses = 5;  ///< MOfN: delete a confirmed track after this many misses in a row.
@@ -167,6 +174,7 @@ struct StepStats {
   std::uint16_t stale = 0;      ///< Deleted: predict gap over max_predict_us (also in `deleted`).
   std::uint16_t unhealthy = 0;  ///< Deleted: P not positive definite, or a variance not positive and finite (also in `deleted`).
   std::uint16_t restarted = 0;  ///< Lost tracks started again from their plot (TrackVerdict::kRestart).
+  std::uint16_t clipped = 0;    ///< Of `associated`: taken beyond the gate with a shrunk innovation (RobustGate).
   bool resynced = false;        ///< The tracker restarted on this frame's clock (tracks deleted first).
   /// The first status a filter or the initiator refused with in this frame
   /// (kOk: none), e.g. kUnderdetermined from a multilateration initiator.
@@ -215,6 +223,11 @@ class Tracker {
     if (config.gate_confirmed_threshold > Scalar(0)) {
       gate_confirmed_.threshold = config.gate_confirmed_threshold;
       gate_probability_confirmed_ = Scalar(1);  // an explicit threshold is taken as "ungated"
+    } else if (config.robust_gate_factor > Scalar(1)) {
+      // The associator searches the outer gate; fold_in() shrinks what lies
+      // beyond the chi-square one.
+      robust_confirmed_.inner = gate_confirmed_.threshold;
+      gate_confirmed_.threshold = gate_confirmed_.threshold * config.robust_gate_factor;
     }
     manager_.configure(config_);
   }
@@ -263,9 +276,9 @@ class Tracker {
     /// hit; if the filter refuses, both stay open.
     void assign(std::size_t k, std::size_t j) {
       if constexpr (ChannelFilter<Filter>) {  // the filter's own gate tests it; no association test
-        tracker_.fold_in(slot_[k], scan_, j, Innov{}, gate_, used_, hit_, drop_);
+        tracker_.fold_in(slot_[k], scan_, j, Innov{}, gate_, robust_, used_, hit_, drop_);
       } else {
-        tracker_.fold_in(slot_[k], scan_, j, innovation(k, j), gate_, used_, hit_, drop_);
+        tracker_.fold_in(slot_[k], scan_, j, innovation(k, j), gate_, robust_, used_, hit_, drop_);
       }
     }
     /// The same with `d` = distance(track(k), j): an innovation (a filter
@@ -274,7 +287,7 @@ class Tracker {
     template <class Distance>
     void assign(std::size_t k, std::size_t j, const Distance& d) {
       if constexpr (std::is_same_v<Distance, Innov>) {
-        tracker_.fold_in(slot_[k], scan_, j, d, gate_, used_, hit_, drop_);
+        tracker_.fold_in(slot_[k], scan_, j, d, gate_, robust_, used_, hit_, drop_);
       } else {
         assign(k, j);
       }
@@ -303,13 +316,14 @@ class Tracker {
       }
     };
     AssociationCandidates(Tracker& tracker, const Scan& scan, const EllipsoidalGate<Scalar, kMeasDim>& gate,
-                          Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
-                          bool (&drop)[kMaxTracks])
-        : tracker_(tracker), scan_(scan), gate_(gate), gate_probability_(gate_probability), used_(used), hit_(hit),
-          drop_(drop) {}
+                          const RobustGate<Scalar, kMeasDim>& robust, Scalar gate_probability,
+                          bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks])
+        : tracker_(tracker), scan_(scan), gate_(gate), robust_(robust), gate_probability_(gate_probability),
+          used_(used), hit_(hit), drop_(drop) {}
     Tracker& tracker_;
     const Scan& scan_;
     const EllipsoidalGate<Scalar, kMeasDim>& gate_;
+    const RobustGate<Scalar, kMeasDim>& robust_;
     Scalar gate_probability_;
     bool (&used_)[kMaxMeasurements];
     bool (&hit_)[kMaxTracks];
@@ -354,8 +368,10 @@ class Tracker {
 
     predict_all(scan.t_us, existed, drop);
     release_unpredicted(existed, drop);
-    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, gate_probability_confirmed_, used, hit, drop);
-    associate(scan, TrackStatus::kTentative, gate_tentative_, gate_probability_tentative_, used, hit, drop);
+    associate(scan, TrackStatus::kConfirmed, gate_confirmed_, robust_confirmed_, gate_probability_confirmed_, used,
+              hit, drop);
+    associate(scan, TrackStatus::kTentative, gate_tentative_, RobustGate<Scalar, kMeasDim>{},
+              gate_probability_tentative_, used, hit, drop);
     initiate_from_seeds(scan, used, hit);
     seed_new(scan, used, hit);
     manage(scan, existed, hit, drop);
@@ -506,9 +522,9 @@ class Tracker {
   /// One association pass over the tracks of `status` that were predicted
   /// to this frame, in table order (age order for a table that only grows).
   void associate(const Scan& scan, TrackStatus status, const EllipsoidalGate<Scalar, kMeasDim>& gate,
-                 Scalar gate_probability, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks],
-                 bool (&drop)[kMaxTracks]) {
-    AssociationCandidates c(*this, scan, gate, gate_probability, used, hit, drop);
+                 const RobustGate<Scalar, kMeasDim>& robust, Scalar gate_probability,
+                 bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+    AssociationCandidates c(*this, scan, gate, robust, gate_probability, used, hit, drop);
     for (const std::size_t i : table_.active_slots()) {
       const TrackT& tr = table_[i];
       if (tr.status != status || !tr.initialised || drop[i]) continue;
@@ -520,12 +536,15 @@ class Tracker {
 
   /// Update track `slot` with measurement j; record the association.
   /// `in`: its innovation before the update (the report and the manager read it).
+  /// `robust`: beyond its inner gate the update takes the shrunk innovation.
   void fold_in(std::size_t slot, const Scan& scan, std::size_t j, const Innov& in,
-               const EllipsoidalGate<Scalar, kMeasDim>& gate, bool (&used)[kMaxMeasurements],
-               bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
+               const EllipsoidalGate<Scalar, kMeasDim>& gate, const RobustGate<Scalar, kMeasDim>& robust,
+               bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
     TrackT& tr = table_[slot];
-    if (const Status s = update_of(tr.filter, scan, j); s != Status::kOk) {
+    const bool clipped = robust.clips(in);
+    const Status s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
+    if (s != Status::kOk) {
       ++stats_.filter_failures;
       note_failure(s);
       if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
@@ -544,12 +563,14 @@ class Tracker {
       if (!tr.filter.diagnostics().fused) return;
     } else {
       tr.nis = in.d2;
-      tr.test_ratio = in.d2 / gate.threshold;
+      // Against the gate that decides a plain update: over 1 means clipped.
+      tr.test_ratio = in.d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
     }
     hit[slot] = true;
     tr.associated = true;
     manager_.hit(tr, in);
     ++stats_.associated;
+    if (clipped) ++stats_.clipped;
   }
 
   /// Update track `slot` with several measurements and their weights
@@ -856,6 +877,7 @@ class Tracker {
   TrackT prototype_{};
   EllipsoidalGate<Scalar, kMeasDim> gate_confirmed_{};
   EllipsoidalGate<Scalar, kMeasDim> gate_tentative_{};
+  RobustGate<Scalar, kMeasDim> robust_confirmed_{};  ///< Off unless config.robust_gate_factor says so.
   Scalar gate_probability_confirmed_{};
   Scalar gate_probability_tentative_{};
   Table table_{};

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: Apache-2.0
+// End to end: the robustness variants (docs/robustness.md) through the
+// whole host chain with the board's tracker (chi-square gate) and the
+// robust gate at 25, for the IMM in double and float, the radar filter that
+// meets the variants' target (EKF-CA and R2-AEKF at qj 1.6 lag S1's weave
+// out of the board's gate even without outliers; docs/robustness.md).
+// The target is a 200-run figure: one confirmed track on the target in at
+// least 99 % of the frames after the first confirmation, no lost episode,
+// no split or restart. Here 8 runs (seeds 2000-2007, apart from the seeds
+// the robust gate was tuned on, 1000-1049, and from the reported ones,
+// 0-199) must give, on their mean: the held fraction of the target; at
+// most 1.25 track ids on the target per run (the robust gate off gives
+// 1.5-8 on these variants); and at most one lost episode more than the
+// same tracker with confirmed tracks ungated, which cannot drop its track,
+// so what it loses is the sensor's noise, not the gate's doing (the x3
+// burst puts single plots 200-250 m off across range at S2's 15 km). The
+// ungated run is a reference, not a bound seed by seed: over 200 runs the
+// robust gate loses fewer episodes than it on every variant, while over 8
+// one episode either way is chance (s1-burst here: 1 against 0).
+// The same check with the robust gate off (the tracker's default, for
+// clutter) fails on the bursts: it can.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "filters/filter_registry.hpp"
+#include "montecarlo/monte_carlo.hpp"
+#include "scenarios/registry.hpp"
+
+using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
+
+namespace {
+constexpr std::uint64_t kFirstSeed = 2000;
+constexpr std::uint64_t kRuns = 8;
+
+struct VariantFigures {
+  double held_fraction = 0.0;  ///< Mean over runs.
+  double track_ids = 0.0;      ///< Mean over runs.
+  std::size_t episodes = 0;    ///< Sum over runs.
+  std::size_t worst_ids = 0;   ///< Largest over runs.
+};
+
+VariantFigures run_variant(const std::string& scenario_name, const std::string& filter_name,
+                           const FilterOptions& options) {
+  const auto scenario = make_scenario(scenario_name);
+  const FilterEntry& filter = find_filter(filter_name);
+  VariantFigures f;
+  for (std::uint64_t seed = kFirstSeed; seed < kFirstSeed + kRuns; ++seed) {
+    const RunRecord r =
+        record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000'000, ScoringConfig{}));
+    f.held_fraction += r.continuity.held_fraction / static_cast<double>(kRuns);
+    f.track_ids += static_cast<double>(r.continuity.track_ids_on_target) / static_cast<double>(kRuns);
+    f.episodes += r.metrics.episodes.size();
+    f.worst_ids = std::max(f.worst_ids, r.continuity.track_ids_on_target);
+  }
+  return f;
+}
+
+FilterOptions board_gate(std::optional<double> robust_gate_factor = std::nullopt) {
+  FilterOptions o;
+  o.board_gate = true;
+  o.robust_gate_factor = robust_gate_factor;
+  return o;
+}
+}  // namespace
+
+SCENARIO("The board IMM with the robust gate holds one track through outliers and noise bursts",
+         "[host_sim][e2e][robustness]") {
+  for (const char* scenario : {"s1-outliers", "s2-outliers", "s1-burst", "s2-burst"}) {
+    for (const char* filter : {"imm", "imm-f32"}) {
+      GIVEN(filter << " on " << scenario << " with the board gate and robust gate 25 over 8 seeds") {
+        const VariantFigures board = run_variant(scenario, filter, board_gate(25.0));
+        const VariantFigures ungated = run_variant(scenario, filter, FilterOptions{});
+        INFO("held " << board.held_fraction << ", track ids " << board.track_ids << " (worst " << board.worst_ids
+                     << "), lost episodes " << board.episodes << " (ungated " << ungated.episodes << ")");
+        THEN("it holds the target, keeps its track and loses about what an ungated track loses") {
+          CHECK(board.held_fraction >= 0.99);
+          CHECK(board.track_ids <= 1.25);
+          CHECK(board.episodes <= ungated.episodes + 1);
+        }
+      }
+    }
+  }
+}
+
+SCENARIO("Without the robust gate a noise burst breaks the board IMM track", "[host_sim][e2e][robustness]") {
+  for (const char* scenario : {"s1-burst", "s2-burst"}) {
+    GIVEN("imm on " << scenario << " with the board gate and the robust gate off as by default") {
+      const VariantFigures plain = run_variant(scenario, "imm", board_gate());
+      INFO("held " << plain.held_fraction << ", track ids " << plain.track_ids);
+      THEN("the track is dropped and restarted") {
+        CHECK(plain.track_ids > 1.25);
+        CHECK(plain.held_fraction < 0.99);
+      }
+    }
+  }
+}
