@@ -1,16 +1,27 @@
 // SPDX-License-Identifier: Apache-2.0
-// `kestrel-sim list`: the registered scenarios and filters.
+// `kestrel-sim list`: the registered scenarios and filters; with
+// --settings, the parameter keys of --set and --config.
 #include <cstdio>
 #include <string>
 
 #include "cli/commands.hpp"
 #include "filters/filter_registry.hpp"
+#include "filters/settings.hpp"
 #include "scenarios/registry.hpp"
 #include "scenarios/uw003.hpp"
 
 namespace kestrel::sim::cli {
 
-int cmd_list() {
+int cmd_list(bool settings) {
+  if (settings) {
+    std::printf("keys of --set KEY=VALUE and --config FILE (radar filters; docs/parameters.md):\n");
+    std::printf("  %-25s %-34s %-28s %s\n", "key", "default", "range", "meaning");
+    for (const SettingInfo& i : setting_table()) {
+      std::printf("  %-25s %-34s %-28s %s\n", i.key.c_str(), i.default_text.c_str(), i.range.c_str(),
+                  i.meaning.c_str());
+    }
+    return 0;
+  }
   std::printf("radar scenarios (run, timing, generate; every radar filter below):\n");
   for (const ScenarioEntry& e : scenario_registry()) {
     const auto s = e.make();

@@ -150,7 +150,11 @@ int cmd_replay(const ReplayOptions& o) {
   }
 
   FilterOptions options = o.filter.options;
-  options.board_gate = !o.ungated;
+  // Gated as a board by default; --ungated or a board_gate setting say otherwise.
+  if (o.ungated && o.filter.board_gate_set && options.board_gate) {
+    throw std::invalid_argument("--ungated and the setting board_gate=true contradict each other");
+  }
+  if (o.ungated || !o.filter.board_gate_set) options.board_gate = !o.ungated;
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
   ScoringConfig scoring;
   scoring.first_scored_step = o.first_scored_step;

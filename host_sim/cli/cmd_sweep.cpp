@@ -10,6 +10,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
+#include "filters/settings.hpp"
 #include "report/summary_json.hpp"
 #include "scenarios/registry.hpp"
 
@@ -17,46 +18,58 @@ namespace kestrel::sim::cli {
 
 namespace {
 
-struct SweepValue {
-  std::string text;  ///< As written, for the tag.
-  double value = 0.0;
+/// The swept parameter: its key, and each value as written (for the tag)
+/// and as a setting.
+struct Sweep {
+  std::string key;
+  std::vector<std::string> texts;
+  std::vector<Setting> values;
 };
 
-/// "qj=1.6,16,160" -> key "qj" and its values.
-std::vector<SweepValue> parse_set(const std::string& set, std::string& key) {
-  const std::size_t eq = set.find('=');
-  if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--set must be KEY=V1,V2,... (e.g. qj=1.6,16,160)");
-  key = set.substr(0, eq);
-  if (key != "qj" && key != "gate-d2") {
-    throw std::invalid_argument("--set: unknown parameter '" + key + "' (known: qj, gate-d2)");
+/// Picks the swept --set out of `sets` (the one with a list, else the
+/// first) and leaves the fixed ones in `fixed`.
+Sweep split_sets(const std::vector<std::string>& sets, std::vector<std::string>& fixed) {
+  std::size_t swept = 0;
+  std::size_t lists = 0;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    if (sets[i].find(',') != std::string::npos) {
+      swept = i;
+      ++lists;
+    }
   }
-  std::vector<SweepValue> values;
+  if (sets.empty()) throw std::invalid_argument("--set KEY=V1,V2,... is required (e.g. qj=1.6,16,160)");
+  if (lists > 1) throw std::invalid_argument("--set: a sweep varies one parameter; give one KEY=V1,V2,... only");
+  Sweep sweep;
+  const std::string& text = sets[swept];
+  const std::size_t eq = text.find('=');
+  if (eq == std::string::npos || eq == 0) throw std::invalid_argument("--set " + text + ": expected KEY=V1,V2,...");
+  sweep.key = text.substr(0, eq);
   std::size_t start = eq + 1;
-  while (start <= set.size()) {
-    const std::size_t comma = set.find(',', start);
-    const std::string item = set.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-    std::size_t used = 0;
-    double v = 0.0;
-    try {
-      v = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (item.empty() || used != item.size() || !(v > 0.0)) {
-      throw std::invalid_argument("--set " + key + ": '" + item + "' is not a positive number");
-    }
-    values.push_back({item, v});
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    sweep.texts.push_back(item);
+    sweep.values.push_back(parse_setting(sweep.key + "=" + item, "--set"));
     if (comma == std::string::npos) break;
     start = comma + 1;
   }
-  return values;
+  for (std::size_t i = 0; i < sets.size(); ++i) {
+    if (i != swept) fixed.push_back(sets[i]);
+  }
+  return sweep;
 }
 
 }  // namespace
 
 int cmd_sweep(const SweepOptions& o) {
-  std::string key;
-  const std::vector<SweepValue> values = parse_set(o.set, key);
+  std::vector<std::string> fixed;
+  const Sweep sweep = split_sets(o.filter.sets, fixed);
+  const std::string& key = sweep.key;
+  FilterChoice base = o.filter;
+  resolve_settings(base, fixed);
+  // Every value is checked before the first run.
+  std::vector<FilterOptions> options(sweep.values.size(), base.options);
+  for (std::size_t i = 0; i < sweep.values.size(); ++i) apply_settings({&sweep.values[i], 1}, options[i]);
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   const std::string scenario = make_scenario(o.scenario)->info().name;
   const std::filesystem::path dir = o.out.empty()
@@ -70,15 +83,13 @@ int cmd_sweep(const SweepOptions& o) {
 
   nlohmann::json results = nlohmann::json::object();
   std::vector<TableRow> rows;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    config.options = o.filter.options;
-    if (key == "qj") config.options.qj = values[i].value;
-    if (key == "gate-d2") config.options.confirmed_gate_d2 = values[i].value;
-    const std::string tag = o.filter.filter + "-" + key + values[i].text;
-    std::fprintf(stderr, "kestrel-sim sweep: %s = %s (%zu of %zu), %zu runs\n", key.c_str(), values[i].text.c_str(),
-                 i + 1, values.size(), o.runs);
+  for (std::size_t i = 0; i < options.size(); ++i) {
+    config.options = options[i];
+    const std::string tag = o.filter.filter + "-" + key + sweep.texts[i];
+    std::fprintf(stderr, "kestrel-sim sweep: %s = %s (%zu of %zu), %zu runs\n", key.c_str(), sweep.texts[i].c_str(),
+                 i + 1, options.size(), o.runs);
     ScenarioReport r = run_scenario_report(scenario, o.filter.filter, config, dir, o.plots, tag);
-    r.entry["sweep"] = {{"parameter", key}, {"value", values[i].value}};
+    r.entry["sweep"] = {{"parameter", key}, {"value", sweep.values[i].value}};
     results[scenario][tag] = r.entry;
     rows.push_back(std::move(r.row));
   }

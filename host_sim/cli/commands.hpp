@@ -19,10 +19,21 @@ struct FilterChoice {
   std::string filter = "ekf-ca";
   std::string scalar;              ///< --scalar (cli/cmd_scalars.hpp); empty: as `filter` names it.
   FilterOptions options;           ///< --qj, --gate-d2 overrides.
+  std::string config;              ///< --config: JSON file of settings (filters/settings.hpp).
+  std::vector<std::string> sets;   ///< --set KEY=VALUE, in order.
+  /// board_gate came from --set or --config (replay's default then yields).
+  bool board_gate_set = false;
   double budget_us = 1000.0;       ///< Step overrun threshold, us.
 };
 
-int cmd_list();
+/// Folds --config and then `sets` into f.options, under the options that
+/// have their own flag (--qj, --gate-d2, --board-gate, --robust-gate, --imm):
+/// a flag wins over --set, which wins over --config. Throws
+/// std::invalid_argument or std::runtime_error for a bad file, key or value.
+void resolve_settings(FilterChoice& f, const std::vector<std::string>& sets);
+
+/// The registries; with `settings`, the parameter keys instead.
+int cmd_list(bool settings);
 
 struct GenerateOptions {
   std::string scenario;
@@ -80,8 +91,7 @@ int cmd_suite(const SuiteOptions& o);
 /// `sweep`: one scenario and filter over values of one parameter.
 struct SweepOptions {
   std::string scenario;
-  FilterChoice filter;
-  std::string set;          ///< "qj=1.6,16,160" or "gate-d2=9.2,13.8".
+  FilterChoice filter;      ///< Its `sets`: the swept KEY=V1,V2,... and fixed KEY=VALUEs.
   std::size_t runs = 20;
   std::uint64_t seed = 0;
   unsigned jobs = 1;

@@ -34,10 +34,18 @@ void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
                   "IMM parameter override KEY=VALUE, repeatable (filters imm, imm-f32; keys in docs/imm.md)");
 }
 
-void add_filter_options(CLI::App* cmd, FilterChoice& f) {
+// --set is left to the caller when it means more (sweep's value lists).
+void add_filter_options(CLI::App* cmd, FilterChoice& f, bool with_set = true) {
   cmd->add_option("--filter,-f", f.filter, "Filter (see `list`)")->capture_default_str();
   add_scalar_option(cmd, f.scalar);
   add_model_options(cmd, f.options);
+  cmd->add_option("--config", f.config,
+                  "JSON file of tracker and filter parameters by key (`list --settings`, docs/parameters.md)");
+  if (with_set) {
+    cmd->add_option("--set", f.sets,
+                    "KEY=VALUE, repeatable: one parameter (`list --settings`); wins over --config, loses to "
+                    "the parameter's own option (--qj, ...)");
+  }
   cmd->add_option("--budget-us", f.budget_us, "Step budget for overrun counting, us")->capture_default_str();
 }
 
@@ -54,7 +62,9 @@ int main(int argc, char** argv) {
   CLI::App app{"kestrel-sim: drive the Kestrel tracker through the HAL with simulated or recorded data"};
   app.require_subcommand(1);
 
-  app.add_subcommand("list", "List scenarios and filters");
+  bool list_settings = false;
+  app.add_subcommand("list", "List scenarios and filters")
+      ->add_flag("--settings", list_settings, "List the parameter keys of --set and --config instead");
 
   GenerateOptions gen;
   CLI::App* generate = app.add_subcommand("generate", "Write one seeded run as a stream file plus truth and plot CSVs");
@@ -98,8 +108,11 @@ int main(int argc, char** argv) {
   SweepOptions sweep;
   CLI::App* sweep_cmd = app.add_subcommand("sweep", "One scenario and filter over values of one parameter (same seeds)");
   sweep_cmd->add_option("--scenario,-s", sweep.scenario, "Scenario (see `list`)")->required();
-  add_filter_options(sweep_cmd, sweep.filter);
-  sweep_cmd->add_option("--set", sweep.set, "KEY=V1,V2,...: qj or gate-d2, e.g. qj=1.6,16,160,500")->required();
+  add_filter_options(sweep_cmd, sweep.filter, false);
+  sweep_cmd->add_option("--set", sweep.filter.sets,
+                        "KEY=V1,V2,...: the swept parameter, e.g. qj=1.6,16,160,500; KEY=VALUE, repeatable: a fixed "
+                        "one (`list --settings`)")
+      ->required();
   sweep_cmd->add_option("--runs,-n", sweep.runs, "Monte Carlo runs per value")->capture_default_str();
   sweep_cmd->add_option("--seed", sweep.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
   sweep_cmd->add_option("--jobs,-j", sweep.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
@@ -173,7 +186,10 @@ int main(int argc, char** argv) {
     for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter, &sweep.filter}) {
       f->filter = filter_for_scalar(f->filter, f->scalar);
     }
-    if (app.got_subcommand("list")) return cmd_list();
+    // --config, then --set, under the options of their own (cli/settings_options.cpp)
+    // (sweep resolves its own: one of its --set is the swept parameter).
+    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) resolve_settings(*f, f->sets);
+    if (app.got_subcommand("list")) return cmd_list(list_settings);
     if (app.got_subcommand(generate)) return cmd_generate(gen);
     if (app.got_subcommand(run_cmd)) return cmd_run(run);
     if (app.got_subcommand(suite_cmd)) return cmd_suite(suite);

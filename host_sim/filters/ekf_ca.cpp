@@ -26,7 +26,7 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
 template <class Scalar>
 host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options) {
   using T = ScalarTraits<Scalar>;
-  const RadarTrackerParams p = ekf_ca_params(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   // What make_radar_tracker() builds, plus the confirmed-track gate, which
   // RadarTrackerParams does not carry.
   CaMotion<Scalar> motion;
@@ -44,24 +44,13 @@ host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& 
 template host::BoardRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(const FilterOptions&);
 template host::BoardRadarTracker<EkfCa<float>> make_ekf_ca_tracker<float>(const FilterOptions&);
 
-RadarTrackerParams ekf_ca_params(const FilterOptions& options) {
-  RadarTrackerParams p;  // S1/S2 sensor (docs/scenarios.md), paper 000's qj = 1.6
-  if (options.qj.has_value()) p.qj = *options.qj;
-  return p;
-}
-
 FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, const char* scalar) {
-  const RadarTrackerParams p = ekf_ca_params(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   char label[96];
   std::snprintf(label, sizeof label, "%s (%s), qj %g%s", name, scalar, p.qj, gate_label(options).c_str());
   FilterSetup setup{label,
-                    {{"qj", p.qj},
-                     {"sigma_range_m", p.sigma_range_m},
-                     {"sigma_bearing_rad", p.sigma_bearing_rad},
-                     {"init_accel_sigma_mps2", p.init_accel_sigma_mps2},
-                     {"confirm_m", p.confirm_m},
-                     {"confirm_n", p.confirm_n},
-                     {"max_coast_misses", p.max_coast_misses}}};
+                    {}};
+  add_radar_parameters(p, setup.parameters);
   // An ungated run has no threshold: JSON null.
   add_gate_parameters(options, setup.parameters);
   return setup;

@@ -2,17 +2,16 @@
 // Paper 000's EKF-CA on the host board (kestrel/tracking/radar_tracker.hpp):
 // double ("ekf-ca") and float ("ekf-ca-f32", the Cortex-M4F build's scalar).
 // Defaults are the S1/S2 sensor of docs/scenarios.md: sr 3 m, sb 0.30 deg, qj 1.6 m^2/s^5; confirmed
-// tracks ungated unless --gate-d2 is given (see FilterOptions).
+// tracks ungated unless a gate is given (see FilterOptions); every parameter
+// by key in filters/settings.hpp.
 #pragma once
 
 #include "filters/filter_registry.hpp"
+#include "filters/settings.hpp"
 #include "kestrel/host/board.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 
 namespace kestrel::sim {
-
-/// The core parameters the options resolve to.
-RadarTrackerParams ekf_ca_params(const FilterOptions& options);
 
 /// Label and parameters of a radar filter on the CA-2D model and the
 /// polar radar ("UKF (float), qj 160"); every such filter shares them.

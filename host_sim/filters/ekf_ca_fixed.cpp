@@ -19,7 +19,7 @@ namespace {
 /// What make_ekf_ca_tracker() builds for double and float, on Q.
 template <class Q>
 host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& options) {
-  const RadarTrackerParams p = ekf_ca_params(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   const RadarTrackerScalars<Q> s = radar_tracker_scalars<Q>(p);
   CaMotion<Q> motion;
   motion.qj = s.qj;

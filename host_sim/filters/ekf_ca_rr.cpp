@@ -60,7 +60,7 @@ template host::BoardRadarTracker<EkfCaRr<float>> make_ekf_ca_rr_tracker<float>(c
 
 RadarRangeRateTrackerParams ekf_ca_rr_params(const FilterOptions& options) {
   RadarRangeRateTrackerParams p;
-  p.radar = ekf_ca_params(options);
+  p.radar = radar_tracker_params(options);
   return p;
 }
 

@@ -39,6 +39,9 @@ struct FilterOptions {
   /// Parameter overrides of the IMM filters, KEY=VALUE each
   /// (filters/imm_filters.hpp lists the keys); other filters ignore them.
   std::vector<std::string> imm;
+  /// Radar tracker parameters by key (filters/settings.hpp), checked when
+  /// set; unset keys keep RadarTrackerParams' defaults.
+  std::map<std::string, double> radar;
 };
 
 /// TrackerConfig::gate_confirmed_threshold for these options: the d2

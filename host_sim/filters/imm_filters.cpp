@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "filters/settings.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 #include "pipeline/stream_run.hpp"
 
@@ -75,9 +76,7 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
                 scalar, p.cv_sa_mps2, p.ca_qj, p.ct_sa_mps2, p.ct_sw_radps, p.switching[0][0], p.switching[1][1],
                 p.switching[2][2], gate_label(options).c_str());
   FilterSetup s{label,
-                {{"sigma_range_m", p.sigma_range_m},
-                 {"sigma_bearing_rad", p.sigma_bearing_rad},
-                 {"cv_sa_mps2", p.cv_sa_mps2},
+                {{"cv_sa_mps2", p.cv_sa_mps2},
                  {"ca_qj", p.ca_qj},
                  {"ct_sa_mps2", p.ct_sa_mps2},
                  {"ct_sw_radps", p.ct_sw_radps},
@@ -92,6 +91,8 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
       s.parameters["p" + std::to_string(i) + std::to_string(j)] = p.switching[i][j];
     }
   }
+  add_radar_parameters(radar_tracker_params(options), s.parameters);
+  s.parameters.erase("qj");  // the IMM's CA mode has ca_qj
   add_gate_parameters(options, s.parameters);
   return s;
 }
@@ -99,7 +100,11 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
 }  // namespace
 
 RadarImmParams imm_params(const FilterOptions& options) {
-  RadarImmParams p;  // sensor of the S1/S2 scenarios; mode noise and matrix: docs/imm.md
+  RadarImmParams p;  // mode noise and matrix: docs/imm.md
+  // The sensor is the radar tracker's (S1/S2 by default, or as set).
+  const RadarTrackerParams radar = radar_tracker_params(options);
+  p.sigma_range_m = radar.sigma_range_m;
+  p.sigma_bearing_rad = radar.sigma_bearing_rad;
   if (options.qj.has_value()) p.ca_qj = *options.qj;
   for (const std::string& item : options.imm) apply(p, item);
   if (!make_radar_imm<double>(p).params().valid()) {
@@ -112,9 +117,7 @@ template <class Scalar>
 host::BoardRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options) {
   using T = ScalarTraits<Scalar>;
   const RadarImmParams p = imm_params(options);
-  RadarTrackerParams tp;  // initiation and management of "ekf-ca"
-  tp.sigma_range_m = p.sigma_range_m;
-  tp.sigma_bearing_rad = p.sigma_bearing_rad;
+  const RadarTrackerParams tp = radar_tracker_params(options);  // initiation and management of "ekf-ca"
   const RadarImm<Scalar> prototype = make_radar_imm<Scalar>(p);
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2)};

@@ -8,19 +8,13 @@
 #include <string>
 #include <utility>
 
+#include "filters/settings.hpp"
 #include "kestrel/host/board.hpp"
 #include "pipeline/stream_run.hpp"
 
 namespace kestrel::sim {
 
 namespace {
-
-/// The S1/S2 sensor (docs/scenarios.md) and paper 000's qj, with the command-line overrides.
-RadarTrackerParams params_of(const FilterOptions& options) {
-  RadarTrackerParams p;
-  if (options.qj.has_value()) p.qj = *options.qj;
-  return p;
-}
 
 template <class Scalar>
 R2AekfConfig<Scalar> convert(const R2AekfConfig<double>& c) {
@@ -57,7 +51,7 @@ template <class Filter>
 host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, const Filter& prototype) {
   using Scalar = typename Filter::Scalar;
   using T = ScalarTraits<Scalar>;
-  const RadarTrackerParams p = params_of(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
       prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
@@ -68,7 +62,7 @@ host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, co
 template <class Scalar>
 R2AekfCa<Scalar> make_filter(const FilterOptions& options, const R2AekfConfig<Scalar>& config) {
   using T = ScalarTraits<Scalar>;
-  const RadarTrackerParams p = params_of(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   CaMotion<Scalar> motion;
   motion.qj = T::from_double(p.qj);
   CaPolarRadar<Scalar> radar;
@@ -154,14 +148,11 @@ template host::BoardRadarTracker<R2AekfCa<float>> make_r2aekf_tracker<float>(con
                                                                              const R2AekfConfig<float>&);
 
 FilterSetup r2aekf_setup_for(const FilterOptions& options, const R2AekfConfig<double>& c, const char* label) {
-  const RadarTrackerParams p = params_of(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   char text[160];
   std::snprintf(text, sizeof text, "%s, qj %g%s", label, p.qj, gate_label(options).c_str());
   FilterSetup setup{text,
-                     {{"qj", p.qj},
-                      {"sigma_range_m", p.sigma_range_m},
-                      {"sigma_bearing_rad", p.sigma_bearing_rad},
-                      {"paper_mode", c.mode == R2AekfMode::kPaper ? 1.0 : 0.0},
+                     {{"paper_mode", c.mode == R2AekfMode::kPaper ? 1.0 : 0.0},
                       {"beta_r", c.beta_r},
                       {"beta_b", c.beta_b},
                       {"alpha_r", c.alpha_r},
@@ -183,6 +174,7 @@ FilterSetup r2aekf_setup_for(const FilterOptions& options, const R2AekfConfig<do
                       {"u_q", c.u_q},
                       {"d_q", c.d_q},
                       {"full_rotated_q", c.q_form == R2AekfQForm::kFullRotated ? 1.0 : 0.0}}};
+  add_radar_parameters(p, setup.parameters);
   add_gate_parameters(options, setup.parameters);
   return setup;
 }

@@ -29,7 +29,7 @@ StreamRunResult run_family(StreamInput stream, const FilterOptions& options, std
   using Filter = FilterT<Motion, Radar>;
   using Tracker = host::BoardRadarTracker<Filter>;
   using T = ScalarTraits<Scalar>;
-  const RadarTrackerParams p = ekf_ca_params(options);
+  const RadarTrackerParams p = radar_tracker_params(options);
   Motion motion;
   motion.qj = T::from_double(p.qj);
   Radar radar;

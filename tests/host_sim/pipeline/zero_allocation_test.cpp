@@ -21,7 +21,7 @@ void check_run_allocates_nothing() {
   auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("s1")->generate(0).frames);
   auto tracker = std::make_unique<Tracker>(
       kestrel::make_radar_tracker<Scalar, kestrel::host::kMaxTracks, kestrel::host::kMaxPlots>(
-          kestrel::sim::ekf_ca_params({})));
+          kestrel::sim::radar_tracker_params({})));
   kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);
 
   std::size_t allocations = 0;

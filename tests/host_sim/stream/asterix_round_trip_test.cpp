@@ -333,7 +333,7 @@ SCENARIO("The board loop with a CAT048 feed and a CAT062 sink allocates nothing"
     const Bytes ast = kestrel::sim::encode_cat048_stream(kestrel::sim::make_scenario("s1")->generate(0).frames, 0);
     auto tracker = std::make_unique<Tracker>(
         kestrel::make_radar_tracker<double, kestrel::host::kMaxTracks, kestrel::host::kMaxPlots>(
-            kestrel::sim::ekf_ca_params({})));
+            kestrel::sim::radar_tracker_params({})));
     kestrel::sim::StreamRun<Tracker, kestrel::host::AsterixFileFeed> run(
         *tracker, ast, 1'000'000, kestrel::hal::asterix::Cat062Source{0, 1, false, 0});
     std::size_t allocations = 0;

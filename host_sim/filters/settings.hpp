@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: Apache-2.0
+// Tracker and filter parameters by name: the keys of `--set KEY=VALUE` and of
+// a `--config FILE` JSON object (docs/parameters.md lists every key, its
+// default and where the default comes from). One table maps each key to its
+// field, its range and its meaning, so the parser, the range check, the echo
+// into summary.json and `kestrel-sim list --settings` cannot drift apart.
+#pragma once
+
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "filters/filter_registry.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
+
+namespace kestrel::sim {
+
+/// One KEY=VALUE, with where it was given (for the error message).
+struct Setting {
+  std::string key;
+  double value = 0.0;
+  std::string origin;  ///< "--set" or the config file's path.
+};
+
+/// "KEY=VALUE" given as `origin`. Throws std::invalid_argument when there is
+/// no '=', no key, or the value is not a finite number (true/false are 1/0).
+Setting parse_setting(const std::string& text, const std::string& origin);
+
+/// The settings of a JSON config file: one object whose values are numbers or
+/// booleans; a nested object's keys are joined with '.', so
+/// {"imm": {"p_stay": 0.9}} gives imm.p_stay. Throws std::runtime_error when
+/// the file cannot be read or parsed, and std::invalid_argument for a value
+/// of another type.
+std::vector<Setting> read_config_file(const std::string& path);
+
+/// Applies the settings to `options` in order (a later one wins). Throws
+/// std::invalid_argument naming the key and its origin when the key is
+/// unknown or the value outside the key's range; `options` is then unchanged.
+void apply_settings(std::span<const Setting> settings, FilterOptions& options);
+
+/// The radar tracker's parameters: the defaults of RadarTrackerParams (the
+/// S1/S2 sensor and paper 000's EKF-CA), then `options.qj` and the radar
+/// keys of `options.radar`.
+RadarTrackerParams radar_tracker_params(const FilterOptions& options);
+
+/// Every radar tracker key with its value in p, for summary.json.
+void add_radar_parameters(const RadarTrackerParams& p, std::map<std::string, double>& parameters);
+
+/// One key of the table, for `list --settings` and the docs.
+struct SettingInfo {
+  std::string key;
+  std::string default_text;  ///< The default as a user would write it ("ungated", "1.6", ...).
+  std::string range;         ///< e.g. "> 0", "1..8, <= confirm_n".
+  std::string meaning;
+};
+
+/// Every key apply_settings() knows, in the order docs/parameters.md gives them.
+std::vector<SettingInfo> setting_table();
+
+}  // namespace kestrel::sim
