@@ -267,8 +267,9 @@ class Crpf {
     // 2. Risk of every noise-free prediction; 3. selection PMF as a cumulative sum.
     Scalar min_risk = T::max_value();
     bool any_finite = false;
+    incremental_costs(xp_, z, inv_scale, cum_);
     for (int i = 0; i < kParticles; ++i) {
-      const Scalar r = lambda * cost[i] + incremental_cost(xp_[i], z, inv_scale);
+      const Scalar r = lambda * cost[i] + cum_[i];
       cum_[i] = r;
       if (T::is_finite(r)) {
         any_finite = true;
@@ -296,8 +297,12 @@ class Crpf {
       Vec<Scalar, kKickDim> a;
       for (int k = 0; k < kKickDim; ++k) a(k) = normal_();
       next[i] = xp_[j] + L * a;
-      next_cost[i] = lambda * cost[j] + incremental_cost(next[i], z, inv_scale);
+      next_cost[i] = lambda * cost[j];
     }
+    // dC of the new particles after the resampling loop (see
+    // incremental_costs), into cum_, which the resampling no longer needs.
+    incremental_costs(next, z, inv_scale, cum_);
+    for (int i = 0; i < kParticles; ++i) next_cost[i] += cum_[i];
 
     // 7. Estimate weighted by the updated cost (weights into the scratch
     // array until the commit). A non-finite particle or cost makes the
@@ -371,9 +376,18 @@ class Crpf {
     return e.squaredNorm();
   }
 
+  /// dc[i] = incremental_cost(x[i], z, inv_scale) for every particle, in a
+  /// loop of its own: no data-dependent branch (resampling pointer, minimum)
+  /// between the h(x) of successive particles, so their independent
+  /// evaluations overlap in the pipeline. The same bits as one call each.
+  void incremental_costs(const State* x, const MeasVec& z, const MeasVec& inv_scale, Scalar* dc) const {
+    for (int i = 0; i < kParticles; ++i) dc[i] = incremental_cost(x[i], z, inv_scale);
+  }
+
   /// (d + delta)^(-beta) for d >= 0, integer beta (bounded loop).
   Scalar pmf(Scalar d) const {
     const Scalar base = d + params_.delta;
+    if (params_.beta == 2) return Scalar(1) / (base * base);  // the default: the loop below, unrolled
     Scalar p = base;
     for (int k = 1; k < kMaxBeta; ++k) {
       if (k >= params_.beta) break;
@@ -433,7 +447,7 @@ class Crpf {
   State xp_[kSize];      ///< Noise-free predictions f(x_i, pending_dt_).
   Scalar cost_[2][kSize];
   Scalar w_[kSize];      ///< Estimation weights of the current cloud.
-  Scalar cum_[kSize];    ///< Risks, then their cumulative PMF.
+  Scalar cum_[kSize];    ///< Scratch of update(): dC, risks, their cumulative PMF, dC, weights.
   int cur_ = 0;
   int cost_cur_ = 0;
   Scalar pending_dt_ = Scalar(0);
