@@ -177,7 +177,7 @@ std::unique_ptr<Scenario> make_raid() {
 }
 
 std::unique_ptr<Scenario> make_formation_split() {
-  // Three abreast, 300 m apart (2.7 cross-range sigmas at 17 km), eastbound
+  // Three abreast, 300 m apart (2.7 cross-range sigmas at 19 km), eastbound
   // at 220 m/s; at t = 40 s the outer two turn away at 3 deg/s for 10 s.
   ScenarioInfo info{"formation-split", "Formation of 3 (300 m abreast) splitting at t = 40 s, T 1 s, Pd 0.9, Poisson(5) clutter",
                     hal::FrameKind::kRadar, 1.0, 90, 300.0};
