@@ -139,6 +139,7 @@ CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
   cmd->add_option("--qj", o.qj, "EKF-CA white-jerk PSD, m^2/s^5 (default 1.6)");
   cmd->add_option("--confirm-m", o.confirm_m, "M of M-of-N (default 2)");
   cmd->add_option("--confirm-n", o.confirm_n, "N of M-of-N (default 3)");
+  cmd->add_option("--max-speed", o.max_speed_mps, "Two-point initiation speed limit, m/s (default 1000)");
   cmd->add_option("--cutoff", o.cutoff_m, "OSPA/GOSPA cut-off c, m")->capture_default_str();
   cmd->add_option("--order", o.order, "OSPA/GOSPA order p")->capture_default_str();
   cmd->add_option("--persistence", o.persistence_steps, "Steps a changed assignment must hold to count as a swap")
@@ -163,6 +164,10 @@ int cmd_multi(const MultiOptions& o) {
   config.qj = o.qj;
   if (o.confirm_m) config.confirm_m = small(*o.confirm_m, "--confirm-m");
   if (o.confirm_n) config.confirm_n = small(*o.confirm_n, "--confirm-n");
+  if (o.max_speed_mps) {
+    if (!(*o.max_speed_mps > 0.0)) throw std::invalid_argument("--max-speed must be positive");
+    config.max_speed_mps = o.max_speed_mps;
+  }
   config.spa = SpaConfig{o.cutoff_m, o.order};
   config.persistence_steps = o.persistence_steps;
   config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
@@ -172,10 +177,11 @@ int cmd_multi(const MultiOptions& o) {
   std::filesystem::create_directories(dir);
 
   const McResult main = run_mc(*scenario, o, config);
-  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), EKF-CA qj %g, %s, c %g m, p %g\n", info.name.c_str(),
-              info.targets, o.runs, static_cast<unsigned long long>(o.seed),
-              static_cast<unsigned long long>(o.seed + o.runs - 1), o.qj.value_or(1.6),
-              multi_associator_name(config.associator), o.cutoff_m, o.order);
+  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), EKF-CA qj %g, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
+              info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
+              static_cast<unsigned long long>(o.seed + o.runs - 1), o.qj.value_or(1.6), o.confirm_m.value_or(2),
+              o.confirm_n.value_or(3), o.max_speed_mps.value_or(1000.0), multi_associator_name(config.associator),
+              o.cutoff_m, o.order);
   const Summary s = summarise(main.runs);
   print_summary(multi_associator_name(config.associator), s);
   write_runs_csv(dir / "multi_runs.csv", o, multi_associator_name(config.associator), main.runs, false);

@@ -26,6 +26,7 @@ struct MultiOptions {
   bool compare_oracle = false;  ///< Also run the oracle associator on the same seeds.
   std::optional<double> qj;
   std::optional<unsigned> confirm_m, confirm_n;
+  std::optional<double> max_speed_mps;
   double cutoff_m = 500.0;
   double order = 2.0;
   std::size_t persistence_steps = 3;

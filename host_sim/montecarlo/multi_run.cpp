@@ -30,6 +30,7 @@ StreamRunResult run_with(const MultiRunConfig& config, std::vector<std::uint8_t>
   if (config.qj.has_value()) p.qj = *config.qj;
   if (config.confirm_m.has_value()) p.confirm_m = static_cast<std::uint8_t>(*config.confirm_m);
   if (config.confirm_n.has_value()) p.confirm_n = static_cast<std::uint8_t>(*config.confirm_n);
+  if (config.max_speed_mps.has_value()) p.max_speed_mps = *config.max_speed_mps;
   CaMotion<double> motion;
   motion.qj = p.qj;
   CaPolarRadar<double> radar;

@@ -38,6 +38,8 @@ struct MultiRunConfig {
   std::optional<double> qj;             ///< EKF-CA white-jerk PSD (default RadarTrackerParams').
   std::optional<unsigned> confirm_m;    ///< M-of-N (default RadarTrackerParams').
   std::optional<unsigned> confirm_n;
+  /// Two-point pairs faster than this are refused, m/s (default RadarTrackerParams' 1000).
+  std::optional<double> max_speed_mps;
   SpaConfig spa;                        ///< c and p of OSPA and GOSPA.
   std::size_t persistence_steps = 3;    ///< Of swaps and fragmentation.
   std::uint64_t budget_ns = 1'000'000;
