@@ -137,21 +137,23 @@ ScenarioRun MultiTargetScenario::generate(std::uint64_t seed) const {
 }
 
 std::unique_ptr<Scenario> make_crossing() {
-  // Both at 200 m/s on straight lines 20 deg apart that cross at (0, 10 km)
-  // at t = 30 s: the plots are within one cross-range sigma (52 m at 10 km)
-  // of each other for about 1.5 s.
+  // Both inbound at 200 m/s, headings -80 and -100 deg, mirror images
+  // about the y axis: their ranges are equal all along, so only bearing
+  // tells them apart, and they cross at (0, 10 km) at t = 30 s with a
+  // cross-range closing speed of 69 m/s; within one cross-range sigma of
+  // each other (52 m at 10 km) for about 1.5 s.
   constexpr double kSpeed = 200.0;
   constexpr double kHalfAngleDeg = 10.0;
   constexpr double kCrossS = 30.0;
-  const double dx = kSpeed * std::cos(kHalfAngleDeg * kDeg) * kCrossS;
-  const double dy = kSpeed * std::sin(kHalfAngleDeg * kDeg) * kCrossS;
-  ScenarioInfo info{"crossing", "Two targets crossing at 20 deg at 10 km, T 1 s, Pd 1, no clutter", hal::FrameKind::kRadar,
-                    1.0, 61, 300.0};
+  const double dx = kSpeed * std::sin(kHalfAngleDeg * kDeg) * kCrossS;
+  const double dy = kSpeed * std::cos(kHalfAngleDeg * kDeg) * kCrossS;
+  ScenarioInfo info{"crossing", "Two inbound targets crossing at 20 deg at 10 km, equal ranges, T 1 s, Pd 1, no clutter",
+                    hal::FrameKind::kRadar, 1.0, 61, 300.0};
   MultiTargetSensor sensor = paper000_sensor();
   sensor.detection_probability = 1.0;
   return std::make_unique<MultiTargetScenario>(
-      info, std::vector<TargetMotion>{straight(-dx, 10000.0 - dy, kSpeed, kHalfAngleDeg),
-                                      straight(-dx, 10000.0 + dy, kSpeed, -kHalfAngleDeg)},
+      info, std::vector<TargetMotion>{straight(-dx, 10000.0 + dy, kSpeed, -90.0 + kHalfAngleDeg),
+                                      straight(dx, 10000.0 + dy, kSpeed, -90.0 - kHalfAngleDeg)},
       sensor);
 }
 
@@ -177,9 +179,12 @@ std::unique_ptr<Scenario> make_raid() {
 }
 
 std::unique_ptr<Scenario> make_formation_split() {
-  // Three abreast, 300 m apart (2.7 cross-range sigmas at 19 km), eastbound
-  // at 220 m/s; at t = 40 s the outer two turn away at 3 deg/s for 10 s.
-  ScenarioInfo info{"formation-split", "Formation of 3 (300 m abreast) splitting at t = 40 s, T 1 s, Pd 0.9, Poisson(5) clutter",
+  // Three abreast across the line of sight, 400 m apart (2.7 cross-range
+  // sigmas at 28 km; along the line of sight range would separate them),
+  // inbound at 220 m/s from (x, 28 km) to about 8 km; at t = 40 s the
+  // outer two turn away at 3 deg/s for 10 s.
+  ScenarioInfo info{"formation-split",
+                    "Formation of 3 (400 m abreast, inbound) splitting at t = 40 s, T 1 s, Pd 0.9, Poisson(5) clutter",
                     hal::FrameKind::kRadar, 1.0, 90, 300.0};
   MultiTargetSensor sensor = paper000_sensor();
   sensor.detection_probability = 0.9;
@@ -188,12 +193,13 @@ std::unique_ptr<Scenario> make_formation_split() {
   sensor.range_max_m = 40000.0;
   sensor.bearing_min_rad = 45.0 * kDeg;
   sensor.bearing_max_rad = 135.0 * kDeg;
-  TargetMotion left = straight(-12000.0, 15300.0, 220.0, 0.0);
-  left.turns.push_back(TurnLeg{40.0, 50.0, 3.0 * kDeg});
-  TargetMotion right = straight(-12000.0, 14700.0, 220.0, 0.0);
-  right.turns.push_back(TurnLeg{40.0, 50.0, -3.0 * kDeg});
+  // Heading -90 deg: turning right (clockwise, negative rate) heads west (-x).
+  TargetMotion west = straight(-400.0, 28000.0, 220.0, -90.0);
+  west.turns.push_back(TurnLeg{40.0, 50.0, -3.0 * kDeg});
+  TargetMotion east = straight(400.0, 28000.0, 220.0, -90.0);
+  east.turns.push_back(TurnLeg{40.0, 50.0, 3.0 * kDeg});
   return std::make_unique<MultiTargetScenario>(
-      info, std::vector<TargetMotion>{left, straight(-12000.0, 15000.0, 220.0, 0.0), right}, sensor);
+      info, std::vector<TargetMotion>{west, straight(0.0, 28000.0, 220.0, -90.0), east}, sensor);
 }
 
 }  // namespace kestrel::sim

@@ -69,6 +69,9 @@ SCENARIO("The crossing targets meet at the crossing time", "[host_sim][scenarios
     CHECK(a.t_s == 30.0);
     CHECK(std::hypot(a.x_m - b.x_m, a.y_m - b.y_m) < 1.0);
     CHECK(std::hypot(r.targets[0][0].x_m - r.targets[1][0].x_m, r.targets[0][0].y_m - r.targets[1][0].y_m) > 2000.0);
+    // Mirror images about the y axis: equal true ranges in every frame.
+    CHECK(std::abs(std::hypot(r.targets[0][45].x_m, r.targets[0][45].y_m) -
+                   std::hypot(r.targets[1][45].x_m, r.targets[1][45].y_m)) < 1e-6);
     for (const auto& f : r.frames) CHECK(f.radar.size() == 2);
   }
 }
@@ -77,12 +80,12 @@ SCENARIO("The formation splits after 40 s", "[host_sim][scenarios][multitarget]"
   const auto s = make_scenario("formation-split");
   REQUIRE(s->info().targets == 3);
   const ScenarioRun r = s->generate(1);
-  THEN("the outer targets are 300 m from the middle one before and over 1 km after") {
+  THEN("the outer targets are 400 m from the middle one before and over 1 km after") {
     const auto gap = [&](std::size_t i, std::size_t k) {
       return std::hypot(r.targets[i][k].x_m - r.targets[1][k].x_m, r.targets[i][k].y_m - r.targets[1][k].y_m);
     };
-    CHECK(std::abs(gap(0, 39) - 300.0) < 1.0);
-    CHECK(std::abs(gap(2, 39) - 300.0) < 1.0);
+    CHECK(std::abs(gap(0, 39) - 400.0) < 1.0);
+    CHECK(std::abs(gap(2, 39) - 400.0) < 1.0);
     CHECK(gap(0, 89) > 1000.0);
     CHECK(gap(2, 89) > 1000.0);
   }
