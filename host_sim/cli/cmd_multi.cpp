@@ -140,6 +140,7 @@ CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
   cmd->add_option("--confirm-m", o.confirm_m, "M of M-of-N (default 2)");
   cmd->add_option("--confirm-n", o.confirm_n, "N of M-of-N (default 3)");
   cmd->add_option("--max-speed", o.max_speed_mps, "Two-point initiation speed limit, m/s (default 1000)");
+  cmd->add_option("--gate-tentative", o.gate_tentative, "Gate probability of tentative tracks (default 0.999)");
   cmd->add_option("--cutoff", o.cutoff_m, "OSPA/GOSPA cut-off c, m")->capture_default_str();
   cmd->add_option("--order", o.order, "OSPA/GOSPA order p")->capture_default_str();
   cmd->add_option("--persistence", o.persistence_steps, "Steps a changed assignment must hold to count as a swap")
@@ -167,6 +168,17 @@ int cmd_multi(const MultiOptions& o) {
   if (o.max_speed_mps) {
     if (!(*o.max_speed_mps > 0.0)) throw std::invalid_argument("--max-speed must be positive");
     config.max_speed_mps = o.max_speed_mps;
+  }
+  if (o.gate_tentative) {
+    const struct {
+      double p;
+      GateProbability g;
+    } table[] = {{0.90, GateProbability::k90}, {0.95, GateProbability::k95}, {0.99, GateProbability::k99},
+                 {0.995, GateProbability::k995}, {0.999, GateProbability::k999}};
+    for (const auto& e : table) {
+      if (std::abs(e.p - *o.gate_tentative) < 1e-9) config.gate_tentative = e.g;
+    }
+    if (!config.gate_tentative) throw std::invalid_argument("--gate-tentative must be 0.90, 0.95, 0.99, 0.995 or 0.999");
   }
   config.spa = SpaConfig{o.cutoff_m, o.order};
   config.persistence_steps = o.persistence_steps;

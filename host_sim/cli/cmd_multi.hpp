@@ -27,6 +27,7 @@ struct MultiOptions {
   std::optional<double> qj;
   std::optional<unsigned> confirm_m, confirm_n;
   std::optional<double> max_speed_mps;
+  std::optional<double> gate_tentative;  ///< 0.90, 0.95, 0.99, 0.995 or 0.999.
   double cutoff_m = 500.0;
   double order = 2.0;
   std::size_t persistence_steps = 3;

@@ -44,6 +44,7 @@ StreamRunResult run_with(const MultiRunConfig& config, std::vector<std::uint8_t>
   FilterOptions gate;
   gate.board_gate = true;
   apply_gate_options<double>(gate, tc);
+  if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;
   auto tracker = std::make_unique<T>(EkfCa<double>(motion, radar), init, tc, typename T::ManagerT{}, params);
   return run_stream(*tracker, StreamInput(std::move(bytes)), config.budget_ns);
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "filters/filter_registry.hpp"
+#include "kestrel/association/chi_square.hpp"
 #include "metrics/multi_target_metrics.hpp"
 #include "pipeline/stream_run_result.hpp"
 #include "scenarios/scenario.hpp"
@@ -40,6 +41,8 @@ struct MultiRunConfig {
   std::optional<unsigned> confirm_n;
   /// Two-point pairs faster than this are refused, m/s (default RadarTrackerParams' 1000).
   std::optional<double> max_speed_mps;
+  /// Gate of tentative tracks (default RadarTrackerParams' gate, 0.999).
+  std::optional<GateProbability> gate_tentative;
   SpaConfig spa;                        ///< c and p of OSPA and GOSPA.
   std::size_t persistence_steps = 3;    ///< Of swaps and fragmentation.
   std::uint64_t budget_ns = 1'000'000;

@@ -6,6 +6,9 @@
 // docs/multitarget.md use seeds 0..199.
 #include <catch2/catch.hpp>
 #include <cstddef>
+#include <cstdint>
+#include <set>
+#include <utility>
 
 #include "montecarlo/multi_run.hpp"
 #include "scenarios/registry.hpp"
@@ -45,14 +48,22 @@ SCENARIO("The oracle associator takes no false alarm", "[host_sim][multitarget]"
   const MultiRunDetail d = run_multi_once(*s, seed, config);
   REQUIRE(d.stream.frames.size() == generated.frames.size());
   std::size_t associated = 0;
+  std::set<std::uint32_t> before;  // tracks reported in the previous frame
   for (std::size_t k = 0; k < d.stream.frames.size(); ++k) {
+    std::set<std::uint32_t> now;
     for (const auto& row : d.stream.frames[k].tracks) {
+      now.insert(row.track_id);
+      // A track reported for the first time may have been started in this
+      // frame: its plot is then the initiator's pairing plot, not an
+      // association.
+      if (before.count(row.track_id) == 0) continue;
       if (!row.associated || row.measurement_index < 0) continue;
       ++associated;
       const auto j = static_cast<std::size_t>(row.measurement_index);
       REQUIRE(j < generated.origins[k].size());
       CHECK(generated.origins[k][j] >= 0);
     }
+    before = std::move(now);
   }
   THEN("its confirmed tracks took plots, every one a target's, and hold most targets at the end") {
     CHECK(associated > 500);
