@@ -8,7 +8,6 @@
 #include "kestrel/association/global_nearest_neighbour.hpp"
 #include "kestrel/association/nearest_neighbour.hpp"
 #include "kestrel/hal/frame.hpp"
-#include "kestrel/tracking/radar_tracker.hpp"
 #include "montecarlo/oracle_association.hpp"
 #include "pipeline/stream_run.hpp"
 #include "stream/quantise.hpp"
@@ -19,33 +18,9 @@ namespace kestrel::sim {
 namespace {
 
 template <template <class, std::size_t, std::size_t> class Associator>
-using MultiTracker = Tracker<EkfCa<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>,
-                             kMultiMaxTracks, hal::kMaxRadarPlots, Associator>;
-
-template <template <class, std::size_t, std::size_t> class Associator>
 StreamRunResult run_with(const MultiRunConfig& config, std::vector<std::uint8_t> bytes,
-                         const typename MultiTracker<Associator>::AssociatorParams& params) {
-  using T = MultiTracker<Associator>;
-  RadarTrackerParams p;
-  if (config.qj.has_value()) p.qj = *config.qj;
-  if (config.confirm_m.has_value()) p.confirm_m = static_cast<std::uint8_t>(*config.confirm_m);
-  if (config.confirm_n.has_value()) p.confirm_n = static_cast<std::uint8_t>(*config.confirm_n);
-  if (config.max_speed_mps.has_value()) p.max_speed_mps = *config.max_speed_mps;
-  CaMotion<double> motion;
-  motion.qj = p.qj;
-  CaPolarRadar<double> radar;
-  radar.sigma_range_m = p.sigma_range_m;
-  radar.sigma_bearing_rad = p.sigma_bearing_rad;
-  const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{radar, p.max_speed_mps,
-                                                                      p.init_accel_sigma_mps2};
-  // Confirmed tracks gated as on a board: with several targets and false
-  // alarms an ungated track takes whatever plot is nearest.
-  typename T::Config tc = radar_tracker_config<double>(p);
-  FilterOptions gate;
-  gate.board_gate = true;
-  apply_gate_options<double>(gate, tc);
-  if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;
-  auto tracker = std::make_unique<T>(EkfCa<double>(motion, radar), init, tc, typename T::ManagerT{}, params);
+                         const typename MultiTargetTracker<Associator>::AssociatorParams& params) {
+  auto tracker = make_multi_target_tracker<Associator>(config, params);
   return run_stream(*tracker, StreamInput(std::move(bytes)), config.budget_ns);
 }
 

@@ -10,12 +10,15 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "filters/filter_registry.hpp"
 #include "kestrel/association/chi_square.hpp"
+#include "kestrel/hal/frame.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
 #include "metrics/multi_target_metrics.hpp"
 #include "pipeline/stream_run_result.hpp"
 #include "scenarios/scenario.hpp"
@@ -47,6 +50,40 @@ struct MultiRunConfig {
   std::size_t persistence_steps = 3;    ///< Of swaps and fragmentation.
   std::uint64_t budget_ns = 1'000'000;
 };
+
+/// The tracker of a multi-target run: EKF-CA with two-point initiation and
+/// M-of-N, kMultiMaxTracks tracks, the wire's 32 plots, the associator given.
+template <template <class, std::size_t, std::size_t> class Associator>
+using MultiTargetTracker = Tracker<EkfCa<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>,
+                                   kMultiMaxTracks, hal::kMaxRadarPlots, Associator>;
+
+/// Build it with the radar tracker's defaults and the overrides of
+/// `config`; confirmed and tentative tracks gated as on a board (with
+/// several targets and false alarms an ungated track takes whatever plot
+/// is nearest). On the heap: the table of 64 tracks is large.
+template <template <class, std::size_t, std::size_t> class Associator>
+std::unique_ptr<MultiTargetTracker<Associator>> make_multi_target_tracker(
+    const MultiRunConfig& config, const typename MultiTargetTracker<Associator>::AssociatorParams& params = {}) {
+  using T = MultiTargetTracker<Associator>;
+  RadarTrackerParams p;
+  if (config.qj.has_value()) p.qj = *config.qj;
+  if (config.confirm_m.has_value()) p.confirm_m = static_cast<std::uint8_t>(*config.confirm_m);
+  if (config.confirm_n.has_value()) p.confirm_n = static_cast<std::uint8_t>(*config.confirm_n);
+  if (config.max_speed_mps.has_value()) p.max_speed_mps = *config.max_speed_mps;
+  CaMotion<double> motion;
+  motion.qj = p.qj;
+  CaPolarRadar<double> radar;
+  radar.sigma_range_m = p.sigma_range_m;
+  radar.sigma_bearing_rad = p.sigma_bearing_rad;
+  const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{radar, p.max_speed_mps,
+                                                                      p.init_accel_sigma_mps2};
+  typename T::Config tc = radar_tracker_config<double>(p);
+  FilterOptions gate;
+  gate.board_gate = true;
+  apply_gate_options<double>(gate, tc);
+  if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;
+  return std::make_unique<T>(EkfCa<double>(motion, radar), init, tc, typename T::ManagerT{}, params);
+}
 
 /// Each plot's true origin by frame time (us on the wire): what the oracle
 /// associator is told.
