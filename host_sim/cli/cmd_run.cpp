@@ -2,6 +2,8 @@
 // `kestrel-sim run`: one scenario, one filter, N seeds.
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
 
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
@@ -35,7 +37,13 @@ void print_files(const std::filesystem::path& dir, const std::string& filter, bo
 
 int cmd_run(const RunOptions& o) {
   const MonteCarloConfig config = config_from(o.filter, o.runs, o.seed, o.jobs);
-  const std::string scenario = make_scenario(o.scenario)->info().name;
+  const auto made = make_scenario(o.scenario);
+  // Single-target scoring (one truth, RMSE) does not apply to several targets.
+  if (made->info().targets > 1) {
+    throw std::invalid_argument("'" + made->info().name + "' has " + std::to_string(made->info().targets) +
+                                " targets: use `kestrel-sim multi -s " + made->info().name + "`");
+  }
+  const std::string scenario = made->info().name;
   const std::filesystem::path dir = o.out.empty() ? std::filesystem::path("results") / scenario : std::filesystem::path(o.out);
   const ScenarioReport report = run_scenario_report(scenario, o.filter.filter, config, dir, o.plots);
   print_table_header(stdout);

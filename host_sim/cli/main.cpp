@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_montecarlo.hpp"
+#include "cli/cmd_multi.hpp"
 #include "cli/cmd_pcl.hpp"
 #include "cli/cmd_r2aekf.hpp"
 #include "cli/cmd_scalars.hpp"
@@ -150,6 +151,9 @@ int main(int argc, char** argv) {
   PclOptions pcl;
   CLI::App* pcl_cmd = add_pcl_command(app, pcl);
 
+  MultiOptions multi;
+  CLI::App* multi_cmd = add_multi_command(app, multi);
+
   kestrel::sim::R2AekfStudyOptions r2aekf;
   CLI::App* r2aekf_cmd = add_r2aekf_command(app, r2aekf);
 
@@ -197,6 +201,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
     if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
+    if (app.got_subcommand(multi_cmd)) return cmd_multi(multi);
     if (app.got_subcommand(montecarlo_cmd)) return cmd_montecarlo(montecarlo);
     if (app.got_subcommand(merge_cmd)) return cmd_merge(merge);
     if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);

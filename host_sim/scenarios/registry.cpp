@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "scenarios/multi_target.hpp"
 #include "scenarios/s1_zigzag.hpp"
 #include "scenarios/s2_scurve.hpp"
 
@@ -23,6 +24,9 @@ const ScenarioEntry kScenarios[] = {
     {"s2-outliers", &make_s2_outliers},
     {"s1-burst", &make_s1_burst},
     {"s2-burst", &make_s2_burst},
+    {"crossing", &make_crossing},
+    {"raid", &make_raid},
+    {"formation-split", &make_formation_split},
 };
 }  // namespace
 

@@ -46,6 +46,12 @@ struct MeasurementFrame {
 struct ScenarioRun {
   std::vector<TruthSample> truth;
   std::vector<MeasurementFrame> frames;
+  /// Scenarios with more than one target (ScenarioInfo::targets > 1):
+  /// targets[i][k] is target i at frames[k].t_s (truth is targets[0]), and
+  /// origins[k][p] the target index of plot p of frames[k], or -1 for a
+  /// false alarm. Empty for single-target scenarios.
+  std::vector<std::vector<TruthSample>> targets;
+  std::vector<std::vector<int>> origins;
 };
 
 /// Constants of a scenario that scoring and the CLI need.
@@ -56,6 +62,7 @@ struct ScenarioInfo {
   double frame_period_s = 0.0; ///< T, s.
   std::size_t steps = 0;       ///< Frames per run.
   double loss_threshold_m = 0.0;  ///< L of the track-loss metric (docs/metrics.md), m.
+  std::size_t targets = 1;        ///< Targets per run (multi-target scenarios: docs/multitarget.md).
 };
 
 class Scenario {

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // The board loop must not allocate (docs/architecture.md; the allocation
 // guard of tests/support): a whole S1 run through hal::Runner - feed decode, adapter,
-// Tracker::step, sink publish - inside an AllocationGuard. The stream is
+// Tracker::step, sink publish - inside an AllocationGuard, and a raid run
+// with the multi-target GNN tracker. The stream is
 // built and the sink sized before the guard, as a board sizes its buffers
 // at start-up.
 #include <catch2/catch.hpp>
 #include <memory>
 
 #include "filters/ekf_ca.hpp"
+#include "kestrel/association/global_nearest_neighbour.hpp"
 #include "kestrel/host/board.hpp"
+#include "montecarlo/multi_run.hpp"
 #include "pipeline/stream_run.hpp"
 #include "scenarios/registry.hpp"
 #include "stream/stream_writer.hpp"
@@ -43,5 +46,33 @@ SCENARIO("A whole S1 run through the Runner allocates nothing", "[host_sim][allo
   }
   GIVEN("EKF-CA in float") {
     THEN("300 frames, 300 steps, zero allocations") { check_run_allocates_nothing<float>(); }
+  }
+}
+
+SCENARIO("A raid run with the multi-target GNN tracker allocates nothing", "[host_sim][alloc][multitarget]") {
+  GIVEN("the raid's 80 frames and the 64-track EKF-CA tracker with GNN, sized before the guard") {
+    using Tracker = kestrel::sim::MultiTargetTracker<kestrel::GlobalNearestNeighbour>;
+    auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("raid")->generate(100002).frames);
+    kestrel::sim::MultiRunConfig config;
+    config.confirm_m = 5;
+    config.confirm_n = 6;
+    config.max_speed_mps = 400.0;
+    auto tracker = kestrel::sim::make_multi_target_tracker<kestrel::GlobalNearestNeighbour>(config);
+    kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);
+    std::size_t allocations = 0;
+    {
+      kestrel::test::AllocationGuard guard;
+      run.run_to_end();
+      allocations = guard.allocations();
+    }
+    THEN("every frame is stepped, most targets are confirmed at the end and nothing was allocated") {
+      REQUIRE(run.stats().steps == 80);
+      CHECK(run.stats().by_status[static_cast<std::size_t>(kestrel::Status::kOk)] == 80);
+      const auto result = run.result();
+      std::size_t confirmed = 0;
+      for (const auto& row : result.frames.back().tracks) confirmed += row.confirmed ? 1 : 0;
+      CHECK(confirmed >= 10);
+      CHECK(allocations == 0);
+    }
   }
 }

@@ -272,6 +272,12 @@ class Tracker {
     /// P_G: the probability that the target's plot falls in the gate (1 for
     /// an explicit threshold, which the tracker takes as "ungated").
     Scalar gate_probability() const { return gate_probability_; }
+    /// Track k's stable id, measurement j and the frame time: what an
+    /// associator told more than the plots needs (a simulation's oracle,
+    /// which knows each plot's true origin, keys its labels on them).
+    std::uint32_t track_id(std::size_t k) const { return tracker_.table_[slot_[k]].id; }
+    const MeasVec& measurement(std::size_t j) const { return scan_.z[j]; }
+    std::int64_t t_us() const { return scan_.t_us; }
     /// Update track k with measurement j. On success j is used and k is
     /// hit; if the filter refuses, both stay open.
     void assign(std::size_t k, std::size_t j) {

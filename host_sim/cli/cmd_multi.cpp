@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "cli/cmd_multi.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "metrics/monte_carlo_stats.hpp"
+#include "montecarlo/multi_run.hpp"
+#include "pipeline/worker_pool.hpp"
+#include "scenarios/registry.hpp"
+
+namespace kestrel::sim::cli {
+
+namespace {
+
+struct Summary {
+  MeanCi gospa, ospa, localisation, missed, false_per_step, swaps, no_swap, false_tracks, fragmentations,
+      time_to_confirm, unconfirmed;
+};
+
+Summary summarise(const std::vector<MultiTargetRunMetrics>& runs) {
+  std::vector<double> gospa, ospa, loc, missed, fps, swaps, no_swap, ft, frag, ttc, unconf;
+  for (const MultiTargetRunMetrics& m : runs) {
+    gospa.push_back(m.mean_gospa_m);
+    ospa.push_back(m.mean_ospa_m);
+    loc.push_back(m.mean_gospa_localisation_m);
+    missed.push_back(m.mean_missed);
+    fps.push_back(m.mean_false);
+    swaps.push_back(static_cast<double>(m.swaps));
+    no_swap.push_back(m.swaps == 0 ? 1.0 : 0.0);
+    ft.push_back(static_cast<double>(m.false_tracks));
+    frag.push_back(static_cast<double>(m.fragmentations));
+    double sum = 0.0;
+    std::size_t n = 0, never = 0;
+    for (const double t : m.time_to_confirm_s) {
+      if (t < 0.0) {
+        ++never;
+      } else {
+        sum += t;
+        ++n;
+      }
+    }
+    ttc.push_back(n > 0 ? sum / static_cast<double>(n) : std::nan(""));
+    unconf.push_back(static_cast<double>(never));
+  }
+  return Summary{mean_ci95(gospa), mean_ci95(ospa),  mean_ci95(loc),   mean_ci95(missed),
+                 mean_ci95(fps),   mean_ci95(swaps), mean_ci95(no_swap), mean_ci95(ft),
+                 mean_ci95(frag),  mean_ci95(ttc),   mean_ci95(unconf)};
+}
+
+void print_ci(const char* name, const MeanCi& m, const char* unit) {
+  std::printf("  %-40s %9.4f  [%.4f, %.4f] %s\n", name, m.mean, m.ci95_low, m.ci95_high, unit);
+}
+
+void print_summary(const char* label, const Summary& s) {
+  std::printf(" %s, mean over runs [95 %% interval]:\n", label);
+  print_ci("GOSPA (mean over steps)", s.gospa, "m");
+  print_ci("OSPA (mean over steps)", s.ospa, "m");
+  print_ci("GOSPA localisation part", s.localisation, "m");
+  print_ci("missed targets per step", s.missed, "");
+  print_ci("false tracks per step", s.false_per_step, "");
+  print_ci("track swaps per run", s.swaps, "");
+  print_ci("runs without a track swap", s.no_swap, "(fraction)");
+  print_ci("false confirmed tracks per run", s.false_tracks, "");
+  print_ci("fragmentations per run", s.fragmentations, "");
+  print_ci("time to confirm", s.time_to_confirm, "s");
+  print_ci("targets never confirmed per run", s.unconfirmed, "");
+}
+
+struct McResult {
+  std::vector<MultiTargetRunMetrics> runs;
+};
+
+McResult run_mc(const Scenario& scenario, const MultiOptions& o, const MultiRunConfig& config) {
+  McResult r;
+  r.runs.resize(o.runs);
+  for_each_index(
+      o.runs, o.jobs, [&](std::size_t i) { r.runs[i] = run_multi_once(scenario, o.seed + i, config).metrics; },
+      Progress{multi_associator_name(config.associator)});
+  return r;
+}
+
+void write_runs_csv(const std::filesystem::path& path, const MultiOptions& o, const char* associator,
+                    const std::vector<MultiTargetRunMetrics>& runs, bool append) {
+  std::ofstream f(path, append ? std::ios::app : std::ios::trunc);
+  if (!append) {
+    f << "associator,seed,gospa_m,ospa_m,gospa_localisation_m,missed_per_step,false_per_step,swaps,false_tracks,"
+         "confirmed_tracks,fragmentations\n";
+  }
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const MultiTargetRunMetrics& m = runs[i];
+    f << associator << ',' << o.seed + i << ',' << m.mean_gospa_m << ',' << m.mean_ospa_m << ','
+      << m.mean_gospa_localisation_m << ',' << m.mean_missed << ',' << m.mean_false << ',' << m.swaps << ','
+      << m.false_tracks << ',' << m.confirmed_tracks << ',' << m.fragmentations << '\n';
+  }
+}
+
+void write_steps_csv(const std::filesystem::path& path, const ScenarioInfo& info,
+                     const std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>>& sets) {
+  std::ofstream f(path);
+  f << "step,time_s";
+  for (const auto& [name, runs] : sets) f << ",gospa_m_" << name << ",ospa_m_" << name;
+  f << '\n';
+  for (std::size_t k = 0; k < info.steps; ++k) {
+    f << k << ',' << static_cast<double>(k) * info.frame_period_s;
+    for (const auto& [name, runs] : sets) {
+      double g = 0.0, os = 0.0;
+      std::size_t n = 0;
+      for (const MultiTargetRunMetrics& m : *runs) {
+        if (k >= m.gospa_m.size()) continue;
+        g += m.gospa_m[k];
+        os += m.ospa_m[k];
+        ++n;
+      }
+      f << ',' << (n ? g / static_cast<double>(n) : std::nan("")) << ',' << (n ? os / static_cast<double>(n) : std::nan(""));
+    }
+    f << '\n';
+  }
+}
+
+}  // namespace
+
+CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
+  CLI::App* cmd = app.add_subcommand("multi", "Multi-target Monte Carlo (crossing, raid, formation-split): OSPA, GOSPA, swaps, false tracks");
+  cmd->add_option("--scenario,-s", o.scenario, "crossing, raid or formation-split")->required();
+  cmd->add_option("--runs,-n", o.runs, "Monte Carlo runs")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
+  cmd->add_option("--jobs,-j", o.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
+  cmd->add_option("--out,-o", o.out, "Output directory (default results/<scenario>-multi)");
+  cmd->add_option("--associator", o.associator, "nn, gnn or oracle (default: gnn for more than one target)");
+  cmd->add_flag("--compare-oracle", o.compare_oracle, "Also run the oracle associator on the same seeds");
+  cmd->add_option("--qj", o.qj, "EKF-CA white-jerk PSD, m^2/s^5 (default 1.6)");
+  cmd->add_option("--confirm-m", o.confirm_m, "M of M-of-N (default 2)");
+  cmd->add_option("--confirm-n", o.confirm_n, "N of M-of-N (default 3)");
+  cmd->add_option("--max-speed", o.max_speed_mps, "Two-point initiation speed limit, m/s (default 1000)");
+  cmd->add_option("--gate-tentative", o.gate_tentative, "Gate probability of tentative tracks (default 0.999)");
+  cmd->add_option("--cutoff", o.cutoff_m, "OSPA/GOSPA cut-off c, m")->capture_default_str();
+  cmd->add_option("--order", o.order, "OSPA/GOSPA order p")->capture_default_str();
+  cmd->add_option("--persistence", o.persistence_steps, "Steps a changed assignment must hold to count as a swap")
+      ->capture_default_str();
+  cmd->add_option("--budget-us", o.budget_us, "Step budget for overrun counting, us")->capture_default_str();
+  return cmd;
+}
+
+int cmd_multi(const MultiOptions& o) {
+  const auto scenario = make_scenario(o.scenario);
+  const ScenarioInfo& info = scenario->info();
+  if (info.targets < 2) throw std::invalid_argument("'" + info.name + "' is a single-target scenario: use `run`");
+  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
+  if (!(o.cutoff_m > 0.0) || !(o.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
+  if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
+  const auto small = [](unsigned v, const char* what) {
+    if (v < 1 || v > 8) throw std::invalid_argument(std::string(what) + " must be 1..8");
+    return v;
+  };
+  MultiRunConfig config;
+  config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
+  config.qj = o.qj;
+  if (o.confirm_m) config.confirm_m = small(*o.confirm_m, "--confirm-m");
+  if (o.confirm_n) config.confirm_n = small(*o.confirm_n, "--confirm-n");
+  if (o.max_speed_mps) {
+    if (!(*o.max_speed_mps > 0.0)) throw std::invalid_argument("--max-speed must be positive");
+    config.max_speed_mps = o.max_speed_mps;
+  }
+  if (o.gate_tentative) {
+    const struct {
+      double p;
+      GateProbability g;
+    } table[] = {{0.90, GateProbability::k90}, {0.95, GateProbability::k95}, {0.99, GateProbability::k99},
+                 {0.995, GateProbability::k995}, {0.999, GateProbability::k999}};
+    for (const auto& e : table) {
+      if (std::abs(e.p - *o.gate_tentative) < 1e-9) config.gate_tentative = e.g;
+    }
+    if (!config.gate_tentative) throw std::invalid_argument("--gate-tentative must be 0.90, 0.95, 0.99, 0.995 or 0.999");
+  }
+  config.spa = SpaConfig{o.cutoff_m, o.order};
+  config.persistence_steps = o.persistence_steps;
+  config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+
+  const std::filesystem::path dir =
+      o.out.empty() ? std::filesystem::path("results") / (info.name + "-multi") : std::filesystem::path(o.out);
+  std::filesystem::create_directories(dir);
+
+  const McResult main = run_mc(*scenario, o, config);
+  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), EKF-CA qj %g, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
+              info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
+              static_cast<unsigned long long>(o.seed + o.runs - 1), o.qj.value_or(1.6), o.confirm_m.value_or(2),
+              o.confirm_n.value_or(3), o.max_speed_mps.value_or(1000.0), multi_associator_name(config.associator),
+              o.cutoff_m, o.order);
+  const Summary s = summarise(main.runs);
+  print_summary(multi_associator_name(config.associator), s);
+  write_runs_csv(dir / "multi_runs.csv", o, multi_associator_name(config.associator), main.runs, false);
+  std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>> sets{
+      {multi_associator_name(config.associator), &main.runs}};
+  McResult oracle;
+  if (o.compare_oracle && config.associator != MultiAssociator::kOracle) {
+    MultiRunConfig oc = config;
+    oc.associator = MultiAssociator::kOracle;
+    oracle = run_mc(*scenario, o, oc);
+    const Summary so = summarise(oracle.runs);
+    print_summary("oracle", so);
+    write_runs_csv(dir / "multi_runs.csv", o, "oracle", oracle.runs, true);
+    sets.emplace_back("oracle", &oracle.runs);
+    // Paired over seeds: the per-run excess of GOSPA over the oracle's,
+    // relative to the oracle's mean.
+    std::vector<double> excess;
+    for (std::size_t i = 0; i < o.runs; ++i) excess.push_back(main.runs[i].mean_gospa_m - oracle.runs[i].mean_gospa_m);
+    const MeanCi e = mean_ci95(excess);
+    std::printf(" GOSPA %s / oracle: %.4f; paired excess %.3f m [%.3f, %.3f], i.e. %+.1f %% [%+.1f, %+.1f] of the oracle's\n",
+                multi_associator_name(config.associator), s.gospa.mean / so.gospa.mean, e.mean, e.ci95_low,
+                e.ci95_high, 100.0 * e.mean / so.gospa.mean, 100.0 * e.ci95_low / so.gospa.mean,
+                100.0 * e.ci95_high / so.gospa.mean);
+  }
+  write_steps_csv(dir / "multi_steps.csv", info, sets);
+  std::printf("wrote %s/{multi_runs.csv, multi_steps.csv}\n", dir.c_str());
+  return 0;
+}
+
+}  // namespace kestrel::sim::cli

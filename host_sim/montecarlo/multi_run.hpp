@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: Apache-2.0
+// One multi-target run (docs/multitarget.md): a multi-target scenario's
+// wire stream through the EKF-CA radar tracker, built for many targets
+// (track table kMultiMaxTracks) with the associator chosen, and scored with
+// the multi-target metrics. The oracle associator is told each plot's true
+// origin (ScenarioRun::origins), so comparing a run with it isolates what
+// association costs.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "filters/filter_registry.hpp"
+#include "kestrel/association/chi_square.hpp"
+#include "kestrel/hal/frame.hpp"
+#include "kestrel/tracking/radar_tracker.hpp"
+#include "metrics/multi_target_metrics.hpp"
+#include "pipeline/stream_run_result.hpp"
+#include "scenarios/scenario.hpp"
+
+namespace kestrel::sim {
+
+/// Track table capacity of the multi-target tracker: twelve targets plus
+/// the seeds and tentative tracks a frame of false alarms starts.
+inline constexpr std::size_t kMultiMaxTracks = 64;
+
+enum class MultiAssociator { kNearestNeighbour, kGlobalNearestNeighbour, kOracle };
+
+/// "nn", "gnn", "oracle"; throws std::invalid_argument otherwise.
+MultiAssociator multi_associator_by_name(const std::string& name);
+const char* multi_associator_name(MultiAssociator a);
+/// GNN when the scenario has more than one target, nearest neighbour otherwise.
+MultiAssociator default_multi_associator(const ScenarioInfo& info);
+
+struct MultiRunConfig {
+  MultiAssociator associator = MultiAssociator::kGlobalNearestNeighbour;
+  std::optional<double> qj;             ///< EKF-CA white-jerk PSD (default RadarTrackerParams').
+  std::optional<unsigned> confirm_m;    ///< M-of-N (default RadarTrackerParams').
+  std::optional<unsigned> confirm_n;
+  /// Two-point pairs faster than this are refused, m/s (default RadarTrackerParams' 1000).
+  std::optional<double> max_speed_mps;
+  /// Gate of tentative tracks (default RadarTrackerParams' gate, 0.999).
+  std::optional<GateProbability> gate_tentative;
+  SpaConfig spa;                        ///< c and p of OSPA and GOSPA.
+  std::size_t persistence_steps = 3;    ///< Of swaps and fragmentation.
+  std::uint64_t budget_ns = 1'000'000;
+};
+
+/// The tracker of a multi-target run: EKF-CA with two-point initiation and
+/// M-of-N, kMultiMaxTracks tracks, the wire's 32 plots, the associator given.
+template <template <class, std::size_t, std::size_t> class Associator>
+using MultiTargetTracker = Tracker<EkfCa<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>,
+                                   kMultiMaxTracks, hal::kMaxRadarPlots, Associator>;
+
+/// Build it with the radar tracker's defaults and the overrides of
+/// `config`; confirmed and tentative tracks gated as on a board (with
+/// several targets and false alarms an ungated track takes whatever plot
+/// is nearest). On the heap: the table of 64 tracks is large.
+template <template <class, std::size_t, std::size_t> class Associator>
+std::unique_ptr<MultiTargetTracker<Associator>> make_multi_target_tracker(
+    const MultiRunConfig& config, const typename MultiTargetTracker<Associator>::AssociatorParams& params = {}) {
+  using T = MultiTargetTracker<Associator>;
+  RadarTrackerParams p;
+  if (config.qj.has_value()) p.qj = *config.qj;
+  if (config.confirm_m.has_value()) p.confirm_m = static_cast<std::uint8_t>(*config.confirm_m);
+  if (config.confirm_n.has_value()) p.confirm_n = static_cast<std::uint8_t>(*config.confirm_n);
+  if (config.max_speed_mps.has_value()) p.max_speed_mps = *config.max_speed_mps;
+  CaMotion<double> motion;
+  motion.qj = p.qj;
+  CaPolarRadar<double> radar;
+  radar.sigma_range_m = p.sigma_range_m;
+  radar.sigma_bearing_rad = p.sigma_bearing_rad;
+  const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{radar, p.max_speed_mps,
+                                                                      p.init_accel_sigma_mps2};
+  typename T::Config tc = radar_tracker_config<double>(p);
+  FilterOptions gate;
+  gate.board_gate = true;
+  apply_gate_options<double>(gate, tc);
+  if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;
+  return std::make_unique<T>(EkfCa<double>(motion, radar), init, tc, typename T::ManagerT{}, params);
+}
+
+/// Each plot's true origin by frame time (us on the wire): what the oracle
+/// associator is told.
+struct OracleLabels {
+  std::map<std::int64_t, std::vector<int>> origins;
+};
+
+struct MultiRunDetail {
+  std::uint64_t seed = 0;
+  StreamRunResult stream;
+  std::vector<MultiTargetStep> steps;
+  MultiTargetRunMetrics metrics;
+};
+
+/// Generate `scenario` with `seed`, run the tracker over its wire stream and score it.
+MultiRunDetail run_multi_once(const Scenario& scenario, std::uint64_t seed, const MultiRunConfig& config);
+
+/// The scored steps of a run: every target and the confirmed tracks per frame.
+std::vector<MultiTargetStep> multi_target_steps(const ScenarioRun& run, const StreamRunResult& stream);
+
+}  // namespace kestrel::sim
