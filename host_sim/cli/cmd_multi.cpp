@@ -137,9 +137,10 @@ CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
   cmd->add_option("--associator", o.associator, "nn, gnn or oracle (default: gnn for more than one target)");
   cmd->add_flag("--compare-oracle", o.compare_oracle, "Also run the oracle associator on the same seeds");
   cmd->add_option("--qj", o.qj, "EKF-CA white-jerk PSD, m^2/s^5 (default 1.6)");
-  cmd->add_option("--confirm-m", o.confirm_m, "M of M-of-N (default 2)");
-  cmd->add_option("--confirm-n", o.confirm_n, "N of M-of-N (default 3)");
-  cmd->add_option("--max-speed", o.max_speed_mps, "Two-point initiation speed limit, m/s (default 1000)");
+  cmd->add_option("--config", o.config,
+                  "JSON file of tracker parameters by key (`list --settings`, docs/parameters.md)");
+  cmd->add_option("--set", o.sets,
+                  "KEY=VALUE, repeatable: one tracker parameter, e.g. confirm_m=5 (`list --settings`)");
   cmd->add_option("--gate-tentative", o.gate_tentative, "Gate probability of tentative tracks (default 0.999)");
   cmd->add_option("--cutoff", o.cutoff_m, "OSPA/GOSPA cut-off c, m")->capture_default_str();
   cmd->add_option("--order", o.order, "OSPA/GOSPA order p")->capture_default_str();
@@ -156,19 +157,13 @@ int cmd_multi(const MultiOptions& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.cutoff_m > 0.0) || !(o.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
   if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
-  const auto small = [](unsigned v, const char* what) {
-    if (v < 1 || v > 8) throw std::invalid_argument(std::string(what) + " must be 1..8");
-    return v;
-  };
   MultiRunConfig config;
   config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
-  config.qj = o.qj;
-  if (o.confirm_m) config.confirm_m = small(*o.confirm_m, "--confirm-m");
-  if (o.confirm_n) config.confirm_n = small(*o.confirm_n, "--confirm-n");
-  if (o.max_speed_mps) {
-    if (!(*o.max_speed_mps > 0.0)) throw std::invalid_argument("--max-speed must be positive");
-    config.max_speed_mps = o.max_speed_mps;
-  }
+  std::vector<Setting> settings;
+  if (!o.config.empty()) settings = read_config_file(o.config);
+  for (const std::string& s : o.sets) settings.push_back(parse_setting(s, "--set"));
+  apply_settings(settings, config.options);
+  if (o.qj.has_value()) config.options.qj = o.qj;
   if (o.gate_tentative) {
     const struct {
       double p;
@@ -189,11 +184,11 @@ int cmd_multi(const MultiOptions& o) {
   std::filesystem::create_directories(dir);
 
   const McResult main = run_mc(*scenario, o, config);
+  const RadarTrackerParams p = radar_tracker_params(config.options);
   std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), EKF-CA qj %g, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
               info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
-              static_cast<unsigned long long>(o.seed + o.runs - 1), o.qj.value_or(1.6), o.confirm_m.value_or(2),
-              o.confirm_n.value_or(3), o.max_speed_mps.value_or(1000.0), multi_associator_name(config.associator),
-              o.cutoff_m, o.order);
+              static_cast<unsigned long long>(o.seed + o.runs - 1), p.qj, unsigned{p.confirm_m},
+              unsigned{p.confirm_n}, p.max_speed_mps, multi_associator_name(config.associator), o.cutoff_m, o.order);
   const Summary s = summarise(main.runs);
   print_summary(multi_associator_name(config.associator), s);
   write_runs_csv(dir / "multi_runs.csv", o, multi_associator_name(config.associator), main.runs, false);

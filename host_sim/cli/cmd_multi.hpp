@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -24,9 +25,9 @@ struct MultiOptions {
   std::string out;              ///< Default results/<scenario>-multi.
   std::string associator;       ///< nn, gnn, oracle; empty: gnn with more than one target.
   bool compare_oracle = false;  ///< Also run the oracle associator on the same seeds.
-  std::optional<double> qj;
-  std::optional<unsigned> confirm_m, confirm_n;
-  std::optional<double> max_speed_mps;
+  std::optional<double> qj;             ///< --qj: wins over --set and --config.
+  std::string config;                   ///< --config FILE (filters/settings.hpp keys).
+  std::vector<std::string> sets;        ///< --set KEY=VALUE, in order.
   std::optional<double> gate_tentative;  ///< 0.90, 0.95, 0.99, 0.995 or 0.999.
   double cutoff_m = 500.0;
   double order = 2.0;

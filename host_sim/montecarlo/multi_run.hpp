@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "filters/filter_registry.hpp"
+#include "filters/settings.hpp"
 #include "kestrel/association/chi_square.hpp"
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
@@ -39,12 +40,11 @@ MultiAssociator default_multi_associator(const ScenarioInfo& info);
 
 struct MultiRunConfig {
   MultiAssociator associator = MultiAssociator::kGlobalNearestNeighbour;
-  std::optional<double> qj;             ///< EKF-CA white-jerk PSD (default RadarTrackerParams').
-  std::optional<unsigned> confirm_m;    ///< M-of-N (default RadarTrackerParams').
-  std::optional<unsigned> confirm_n;
-  /// Two-point pairs faster than this are refused, m/s (default RadarTrackerParams' 1000).
-  std::optional<double> max_speed_mps;
-  /// Gate of tentative tracks (default RadarTrackerParams' gate, 0.999).
+  /// qj and the radar tracker's keys (filters/settings.hpp): defaults,
+  /// then --config and --set. The confirmed-track gate is the board's
+  /// unless gate_d2 is given.
+  FilterOptions options;
+  /// Gate of tentative tracks alone (default: gate_probability, 0.999).
   std::optional<GateProbability> gate_tentative;
   SpaConfig spa;                        ///< c and p of OSPA and GOSPA.
   std::size_t persistence_steps = 3;    ///< Of swaps and fragmentation.
@@ -65,11 +65,7 @@ template <template <class, std::size_t, std::size_t> class Associator>
 std::unique_ptr<MultiTargetTracker<Associator>> make_multi_target_tracker(
     const MultiRunConfig& config, const typename MultiTargetTracker<Associator>::AssociatorParams& params = {}) {
   using T = MultiTargetTracker<Associator>;
-  RadarTrackerParams p;
-  if (config.qj.has_value()) p.qj = *config.qj;
-  if (config.confirm_m.has_value()) p.confirm_m = static_cast<std::uint8_t>(*config.confirm_m);
-  if (config.confirm_n.has_value()) p.confirm_n = static_cast<std::uint8_t>(*config.confirm_n);
-  if (config.max_speed_mps.has_value()) p.max_speed_mps = *config.max_speed_mps;
+  const RadarTrackerParams p = radar_tracker_params(config.options);
   CaMotion<double> motion;
   motion.qj = p.qj;
   CaPolarRadar<double> radar;
@@ -78,7 +74,7 @@ std::unique_ptr<MultiTargetTracker<Associator>> make_multi_target_tracker(
   const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{radar, p.max_speed_mps,
                                                                       p.init_accel_sigma_mps2};
   typename T::Config tc = radar_tracker_config<double>(p);
-  FilterOptions gate;
+  FilterOptions gate = config.options;
   gate.board_gate = true;
   apply_gate_options<double>(gate, tc);
   if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;

@@ -54,9 +54,7 @@ SCENARIO("A raid run with the multi-target GNN tracker allocates nothing", "[hos
     using Tracker = kestrel::sim::MultiTargetTracker<kestrel::GlobalNearestNeighbour>;
     auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("raid")->generate(100002).frames);
     kestrel::sim::MultiRunConfig config;
-    config.confirm_m = 5;
-    config.confirm_n = 6;
-    config.max_speed_mps = 400.0;
+    config.options.radar = {{"confirm_m", 5.0}, {"confirm_n", 6.0}, {"max_speed_mps", 400.0}};
     auto tracker = kestrel::sim::make_multi_target_tracker<kestrel::GlobalNearestNeighbour>(config);
     kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);
     std::size_t allocations = 0;
