@@ -12,8 +12,12 @@
 // for_each_sigma_case() (a new family: a new function, and for
 // kestrel-instr-count a translation unit of its own, see instr_count.hpp)
 // (and kTrackerPaths<F> = false if it is measured as a filter only).
+// The radar IMM (for_each_imm_case()) is counted by kestrel-instr-count
+// only, with its own defaults (RadarImmParams, kestrel-sim's "imm") and two
+// tracker path classes: normal and worst_case.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -25,6 +29,7 @@
 
 #include "bench/bench_inputs.hpp"
 #include "kestrel/filters/ekf.hpp"
+#include "kestrel/filters/imm_radar.hpp"
 #include "kestrel/filters/r2aekf.hpp"
 #include "kestrel/filters/sigma_point_filter.hpp"
 #include "kestrel/filters/sr_sigma_point_filter.hpp"
@@ -115,6 +120,14 @@ void for_each_sigma_case(Visitor&& visit) {
   visit.template operator()<SigmaCa<SrCdkf, double>>(CaseName{"srcdkf-ca", "double", "structured"});
 }
 
+/// Calls visit.template operator()<Filter>(CaseName) for the radar IMM
+/// (CV, CA and CT EKFs, each on its structured models) in double and float.
+template <class Visitor>
+void for_each_imm_case(Visitor&& visit) {
+  visit.template operator()<RadarImm<double>>(CaseName{"imm", "double", "structured"});
+  visit.template operator()<RadarImm<float>>(CaseName{"imm", "float", "structured"});
+}
+
 /// Every case: the EKF family, then the sigma-point filters.
 template <class Visitor>
 void for_each_filter_case(Visitor&& visit) {
@@ -132,17 +145,26 @@ inline RadarTrackerParams bench_params() {
   return p;
 }
 
-/// A filter of type F with the CA-2D/polar parameters p.
+/// A filter of type F with the CA-2D/polar parameters p. The IMM takes
+/// kestrel-sim's defaults (docs/imm.md) with p's sensor: its modes have
+/// their own noise, not p's qj.
 template <class F>
 F make_filter(const RadarTrackerParams& p) {
   using Scalar = typename F::Scalar;
-  using T = ScalarTraits<Scalar>;
-  typename F::MotionModel motion{};
-  motion.qj = T::from_double(p.qj);
-  typename F::MeasurementModel radar{};
-  radar.sigma_range_m = T::from_double(p.sigma_range_m);
-  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
-  return F(motion, radar);
+  if constexpr (requires { F::kModes; }) {
+    RadarImmParams ip;
+    ip.sigma_range_m = p.sigma_range_m;
+    ip.sigma_bearing_rad = p.sigma_bearing_rad;
+    return make_radar_imm<Scalar>(ip);
+  } else {
+    using T = ScalarTraits<Scalar>;
+    typename F::MotionModel motion{};
+    motion.qj = T::from_double(p.qj);
+    typename F::MeasurementModel radar{};
+    radar.sigma_range_m = T::from_double(p.sigma_range_m);
+    radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
+    return F(motion, radar);
+  }
 }
 
 template <class F>
@@ -268,9 +290,10 @@ std::unique_ptr<Tracker> warmed(std::unique_ptr<Tracker> t, const std::vector<Fr
 }
 
 /// Every path class for filter F (see docs/performance.md for what each
-/// exercises). Throws if a path's defining condition does not hold.
+/// exercises), or those named in `only`. Throws if a path's defining
+/// condition does not hold.
 template <class F>
-std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
+std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<std::string>& only = {}) {
   using Tracker = BenchTracker<F>;
   using Scan = typename Tracker::Scan;
   constexpr std::size_t kTracks = Tracker::Table::kMaxTracks;
@@ -278,11 +301,14 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   const std::vector<FrameSi> s1 = s1_frames();
   auto fresh = [] { return std::make_unique<Tracker>(make_tracker<F>()); };
   std::vector<TrackerPath<Tracker>> paths;
+  const auto want = [&only](const char* name) {
+    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
+  };
 
   // normal: S1, one confirmed track, its plot associated and fused; steps of
   // S1 where anything else happens (a drop, a re-initiation) are stepped but
   // not counted.
-  {
+  if (want("normal")) {
     TrackerPath<Tracker> p;
     p.name = "normal";
     p.description = "S1 single target: predict, gate, update, manage, report (1 confirmed track, 1 plot)";
@@ -303,7 +329,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
 
   // gated_out: the next plot lands 0.1 rad off the track: outside its gate,
   // it starts a seed instead.
-  {
+  if (want("gated_out")) {
     TrackerPath<Tracker> p;
     p.name = "gated_out";
     p.description = "1 confirmed track, its plot 0.1 rad off: predict, gate miss, seed, coast, report";
@@ -318,7 +344,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
 
   // rejected: a full frame whose last plot is beyond the maximum range:
   // validation reads every plot before refusing (the longest refusal).
-  {
+  if (want("rejected")) {
     TrackerPath<Tracker> p;
     p.name = "rejected";
     p.description = "full frame (32 plots), last one out of range: validated and refused (kOutOfRange)";
@@ -334,7 +360,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   }
 
   // initiation: a seed from S1 frame 0 pairs with the plot of frame 1.
-  {
+  if (want("initiation")) {
     TrackerPath<Tracker> p;
     p.name = "initiation";
     p.description = "1 seed + its second plot: two-point initiation of a tentative track";
@@ -348,7 +374,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   // worst_case: a full table (16 confirmed tracks) and a full frame (32
   // plots: one per track, 16 clutter plots far outside every gate, which
   // find no free slot).
-  {
+  if (want("worst_case")) {
     TrackerPath<Tracker> p;
     p.name = "worst_case";
     p.description = "16 confirmed tracks x 32 plots: 392 gate tests, 16 updates, 16 plots dropped, 16 reports";

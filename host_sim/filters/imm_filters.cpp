@@ -65,7 +65,9 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
   using Tracker = host::BoardRadarTracker<RadarImm<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(make_imm_tracker<Scalar>(options));
-  return run_stream(*tracker, std::move(stream), budget_ns);
+  StreamRunResult r = run_stream(*tracker, std::move(stream), budget_ns);
+  r.mode_names = {"cv", "ca", "ct"};  // RadarImm's mode order
+  return r;
 }
 
 FilterSetup setup_with(const FilterOptions& options, const char* scalar) {

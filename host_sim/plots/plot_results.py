@@ -8,6 +8,10 @@
       P_error.png  position error e_k over time with the loss threshold L
   plot_results.py summary --summary summary.json --out summary.png
       RMSE and peak error with their 95 % intervals per scenario and filter
+  plot_results.py modes --modes M.csv --steps S.csv --out P.png [--title X]
+      mean mode probabilities over the runs of M.csv (an IMM's
+      <filter>_modes.csv) against time, with the truth's manoeuvres from the
+      truth of S.csv shaded, and the truth's accelerations below
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
 pandas). If matplotlib is missing it prints a warning and exits 0: plots are
@@ -117,6 +121,86 @@ def plot_summary(plt, args):
     plt.close(fig)
 
 
+def truth_accelerations(steps):
+    """Along-track and lateral acceleration of the truth (m/s^2) at each
+    interior scored step, from second differences of its positions (the
+    truth is noise-free); NaN at the ends and across uneven steps."""
+    t = [number(r["time_s"]) for r in steps]
+    x = [number(r["truth_x_m"]) for r in steps]
+    y = [number(r["truth_y_m"]) for r in steps]
+    along, lat = [math.nan] * len(t), [math.nan] * len(t)
+    for k in range(1, len(t) - 1):
+        h0, h1 = t[k] - t[k - 1], t[k + 1] - t[k]
+        if h0 <= 0 or abs(h1 - h0) > 1e-9 * h0:
+            continue
+        vx, vy = (x[k + 1] - x[k - 1]) / (2 * h0), (y[k + 1] - y[k - 1]) / (2 * h0)
+        ax, ay = (x[k + 1] - 2 * x[k] + x[k - 1]) / h0 ** 2, (y[k + 1] - 2 * y[k] + y[k - 1]) / h0 ** 2
+        v = math.hypot(vx, vy)
+        if v > 0:
+            along[k] = (ax * vx + ay * vy) / v
+            lat[k] = (vx * ay - vy * ax) / v
+    return t, along, lat
+
+
+def intervals(t, flags):
+    """[(t0, t1)] of the runs of True in flags, each widened by half a step."""
+    out, start = [], None
+    for k, f in enumerate(flags):
+        if f and start is None:
+            start = k
+        if (not f or k == len(flags) - 1) and start is not None:
+            end = k if f else k - 1
+            half = (t[1] - t[0]) / 2 if len(t) > 1 else 0
+            out.append((t[start] - half, t[end] + half))
+            start = None
+    return out
+
+
+def plot_modes(plt, args):
+    rows = read_rows(args.modes)
+    names = [c[3:] for c in (rows[0].keys() if rows else []) if c.startswith("mu_")]
+    if not rows or not names:
+        print(f"warning: {args.modes} holds no mode probabilities; no plot", file=sys.stderr)
+        return
+    by_t = {}
+    runs = set()
+    for r in rows:
+        runs.add(r["run"])
+        by_t.setdefault(round(number(r["time_s"]), 6), []).append([number(r["mu_" + n]) for n in names])
+    times = sorted(by_t)
+    means = [[math.fsum(v[j] for v in by_t[ti]) / len(by_t[ti]) for ti in times] for j in range(len(names))]
+
+    steps = read_rows(args.steps)
+    tt, along, lat = truth_accelerations(steps) if len(steps) > 2 else ([], [], [])
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    if tt:
+        turn = intervals(tt, [abs(a) > args.lateral_mps2 for a in lat])
+        speed = intervals(tt, [abs(a) > args.along_mps2 for a in along])
+        for i, (a, b) in enumerate(turn):
+            ax.axvspan(a, b, color="tab:green", alpha=0.12, lw=0,
+                       label=f"truth |lateral a| > {args.lateral_mps2:g} m/s$^2$" if i == 0 else None)
+        for i, (a, b) in enumerate(speed):
+            ax.axvspan(a, b, color="tab:red", alpha=0.18, lw=0,
+                       label=f"truth |along-track a| > {args.along_mps2:g} m/s$^2$" if i == 0 else None)
+        ax2.plot(tt, lat, "-", color="tab:green", lw=1, label="lateral")
+        ax2.plot(tt, along, "-", color="tab:red", lw=1, label="along-track")
+    colours = {"cv": "tab:blue", "ca": "tab:orange", "ct": "tab:purple"}
+    for j, n in enumerate(names):
+        ax.plot(times, means[j], "-", lw=1.5, color=colours.get(n), label=f"mean mu {n.upper()}")
+    ax.set_ylim(0, 1)
+    ax.set_ylabel("mode probability")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="upper right", fontsize=7, ncol=2)
+    ax.set_title(f"{args.title}: mean mode probabilities of the scored track ({len(runs)} runs)", fontsize=9)
+    ax2.set_ylabel("truth accel. [m/s$^2$]")
+    ax2.set_xlabel("time [s]")
+    ax2.grid(True, alpha=0.3)
+    ax2.legend(loc="upper right", fontsize=7)
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=120)
+    plt.close(fig)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="mode", required=True)
@@ -129,6 +213,13 @@ def main():
     s = sub.add_parser("summary")
     s.add_argument("--summary", required=True)
     s.add_argument("--out", required=True)
+    m = sub.add_parser("modes")
+    m.add_argument("--modes", required=True)
+    m.add_argument("--steps", required=True)
+    m.add_argument("--out", required=True)
+    m.add_argument("--title", default="kestrel-sim")
+    m.add_argument("--lateral-mps2", type=float, default=2.0, help="shade the truth's turns above this")
+    m.add_argument("--along-mps2", type=float, default=1.0, help="shade the truth's speed changes above this")
     args = p.parse_args()
 
     plt = load_matplotlib()
@@ -136,6 +227,8 @@ def main():
         return 0
     if args.mode == "run":
         plot_run(plt, args)
+    elif args.mode == "modes":
+        plot_modes(plt, args)
     else:
         plot_summary(plt, args)
     return 0
