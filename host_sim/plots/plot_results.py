@@ -10,8 +10,9 @@
       RMSE and peak error with their 95 % intervals per scenario and filter
   plot_results.py modes --modes M.csv --steps S.csv --out P.png [--title X]
       mean mode probabilities over the runs of M.csv (an IMM's
-      <filter>_modes.csv) against time, with the truth's manoeuvres from the
-      truth of S.csv shaded, and the truth's accelerations below
+      <filter>_modes.csv) against time, the truth's turns and speed changes
+      (from the truth of S.csv) marked along the top, and the truth's turn
+      rate and dv/dt below
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
 pandas). If matplotlib is missing it prints a warning and exits 0: plots are
@@ -121,14 +122,14 @@ def plot_summary(plt, args):
     plt.close(fig)
 
 
-def truth_accelerations(steps):
-    """Along-track and lateral acceleration of the truth (m/s^2) at each
-    interior scored step, from second differences of its positions (the
-    truth is noise-free); NaN at the ends and across uneven steps."""
+def truth_manoeuvre(steps):
+    """Turn rate (rad/s) and rate of change of speed (m/s^2) of the truth at
+    each interior scored step, from central differences of its positions
+    (the truth is noise-free); NaN at the ends and across uneven steps."""
     t = [number(r["time_s"]) for r in steps]
     x = [number(r["truth_x_m"]) for r in steps]
     y = [number(r["truth_y_m"]) for r in steps]
-    along, lat = [math.nan] * len(t), [math.nan] * len(t)
+    turn, dspeed = [math.nan] * len(t), [math.nan] * len(t)
     for k in range(1, len(t) - 1):
         h0, h1 = t[k] - t[k - 1], t[k + 1] - t[k]
         if h0 <= 0 or abs(h1 - h0) > 1e-9 * h0:
@@ -137,9 +138,9 @@ def truth_accelerations(steps):
         ax, ay = (x[k + 1] - 2 * x[k] + x[k - 1]) / h0 ** 2, (y[k + 1] - 2 * y[k] + y[k - 1]) / h0 ** 2
         v = math.hypot(vx, vy)
         if v > 0:
-            along[k] = (ax * vx + ay * vy) / v
-            lat[k] = (vx * ay - vy * ax) / v
-    return t, along, lat
+            dspeed[k] = (ax * vx + ay * vy) / v
+            turn[k] = (vx * ay - vy * ax) / (v * v)
+    return t, turn, dspeed
 
 
 def intervals(t, flags):
@@ -171,31 +172,33 @@ def plot_modes(plt, args):
     means = [[math.fsum(v[j] for v in by_t[ti]) / len(by_t[ti]) for ti in times] for j in range(len(names))]
 
     steps = read_rows(args.steps)
-    tt, along, lat = truth_accelerations(steps) if len(steps) > 2 else ([], [], [])
-    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    tt, turn, dspeed = truth_manoeuvre(steps) if len(steps) > 2 else ([], [], [])
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(11, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
     if tt:
-        turn = intervals(tt, [abs(a) > args.lateral_mps2 for a in lat])
-        speed = intervals(tt, [abs(a) > args.along_mps2 for a in along])
-        for i, (a, b) in enumerate(turn):
-            ax.axvspan(a, b, color="tab:green", alpha=0.12, lw=0,
-                       label=f"truth |lateral a| > {args.lateral_mps2:g} m/s$^2$" if i == 0 else None)
-        for i, (a, b) in enumerate(speed):
-            ax.axvspan(a, b, color="tab:red", alpha=0.18, lw=0,
-                       label=f"truth |along-track a| > {args.along_mps2:g} m/s$^2$" if i == 0 else None)
-        ax2.plot(tt, lat, "-", color="tab:green", lw=1, label="lateral")
-        ax2.plot(tt, along, "-", color="tab:red", lw=1, label="along-track")
+        # Strips along the top, so the curves stay readable where the truth
+        # manoeuvres all the time (the S1 weave).
+        spans = ((intervals(tt, [abs(w) > args.turn_radps for w in turn]), 0.94, "tab:green",
+                  f"truth turning, |turn rate| > {args.turn_radps:g} rad/s"),
+                 (intervals(tt, [abs(a) > args.speed_mps2 for a in dspeed]), 0.88, "tab:red",
+                  f"truth speed changing, |dv/dt| > {args.speed_mps2:g} m/s$^2$"))
+        for spans_of, low, colour, label in spans:
+            for i, (a, b) in enumerate(spans_of):
+                ax.axvspan(a, b, ymin=low, ymax=low + 0.05, color=colour, alpha=0.6, lw=0,
+                           label=label if i == 0 else None)
+        ax2.plot(tt, [math.degrees(w) for w in turn], "-", color="tab:green", lw=1, label="turn rate [deg/s]")
+        ax2.plot(tt, dspeed, "-", color="tab:red", lw=1, label="dv/dt [m/s$^2$]")
     colours = {"cv": "tab:blue", "ca": "tab:orange", "ct": "tab:purple"}
     for j, n in enumerate(names):
         ax.plot(times, means[j], "-", lw=1.5, color=colours.get(n), label=f"mean mu {n.upper()}")
-    ax.set_ylim(0, 1)
+    ax.set_ylim(0, 1.0)
     ax.set_ylabel("mode probability")
     ax.grid(True, alpha=0.3)
-    ax.legend(loc="upper right", fontsize=7, ncol=2)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
     ax.set_title(f"{args.title}: mean mode probabilities of the scored track ({len(runs)} runs)", fontsize=9)
-    ax2.set_ylabel("truth accel. [m/s$^2$]")
+    ax2.set_ylabel("truth")
     ax2.set_xlabel("time [s]")
     ax2.grid(True, alpha=0.3)
-    ax2.legend(loc="upper right", fontsize=7)
+    ax2.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
     fig.tight_layout()
     fig.savefig(args.out, dpi=120)
     plt.close(fig)
@@ -218,8 +221,8 @@ def main():
     m.add_argument("--steps", required=True)
     m.add_argument("--out", required=True)
     m.add_argument("--title", default="kestrel-sim")
-    m.add_argument("--lateral-mps2", type=float, default=2.0, help="shade the truth's turns above this")
-    m.add_argument("--along-mps2", type=float, default=1.0, help="shade the truth's speed changes above this")
+    m.add_argument("--turn-radps", type=float, default=0.02, help="mark the truth's turns above this rate")
+    m.add_argument("--speed-mps2", type=float, default=2.0, help="mark the truth's speed changes above this")
     args = p.parse_args()
 
     plt = load_matplotlib()
