@@ -63,8 +63,7 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
     if (report.modes_written) {
       report.modes_plotted =
           plot_modes(names.modes_csv, names.steps_csv, names.plot_prefix.string() + "_modes.png",
-                     info.name + " / " + context.setup.label + " / " + std::to_string(config.runs) + " runs from seed " +
-                         std::to_string(config.base_seed));
+                     info.name + " / " + name + " / seeds " + std::to_string(config.base_seed) + "+");
     }
   }
   return report;
