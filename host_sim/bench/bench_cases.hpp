@@ -17,7 +17,6 @@
 // tracker path classes: normal and worst_case.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -289,11 +288,18 @@ std::unique_ptr<Tracker> warmed(std::unique_ptr<Tracker> t, const std::vector<Fr
   return t;
 }
 
-/// Every path class for filter F (see docs/performance.md for what each
-/// exercises), or those named in `only`. Throws if a path's defining
-/// condition does not hold.
+/// Whether every tracker path class is measured for F; the IMM's budgets
+/// hold two, normal and worst_case. A compile-time choice, so the EKF
+/// family's paths compile to what they were (a counted path's code must
+/// not move when a case is added: instr_count.hpp).
 template <class F>
-std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<std::string>& only = {}) {
+inline constexpr bool kAllTrackerPaths = !requires { F::kModes; };
+
+/// Every path class for filter F (see docs/performance.md for what each
+/// exercises; kAllTrackerPaths). Throws if a path's defining condition does
+/// not hold.
+template <class F>
+std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   using Tracker = BenchTracker<F>;
   using Scan = typename Tracker::Scan;
   constexpr std::size_t kTracks = Tracker::Table::kMaxTracks;
@@ -301,14 +307,11 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<s
   const std::vector<FrameSi> s1 = s1_frames();
   auto fresh = [] { return std::make_unique<Tracker>(make_tracker<F>()); };
   std::vector<TrackerPath<Tracker>> paths;
-  const auto want = [&only](const char* name) {
-    return only.empty() || std::find(only.begin(), only.end(), name) != only.end();
-  };
 
   // normal: S1, one confirmed track, its plot associated and fused; steps of
   // S1 where anything else happens (a drop, a re-initiation) are stepped but
   // not counted.
-  if (want("normal")) {
+  {
     TrackerPath<Tracker> p;
     p.name = "normal";
     p.description = "S1 single target: predict, gate, update, manage, report (1 confirmed track, 1 plot)";
@@ -329,7 +332,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<s
 
   // gated_out: the next plot lands 0.1 rad off the track: outside its gate,
   // it starts a seed instead.
-  if (want("gated_out")) {
+  if constexpr (kAllTrackerPaths<F>) {
     TrackerPath<Tracker> p;
     p.name = "gated_out";
     p.description = "1 confirmed track, its plot 0.1 rad off: predict, gate miss, seed, coast, report";
@@ -344,7 +347,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<s
 
   // rejected: a full frame whose last plot is beyond the maximum range:
   // validation reads every plot before refusing (the longest refusal).
-  if (want("rejected")) {
+  if constexpr (kAllTrackerPaths<F>) {
     TrackerPath<Tracker> p;
     p.name = "rejected";
     p.description = "full frame (32 plots), last one out of range: validated and refused (kOutOfRange)";
@@ -360,7 +363,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<s
   }
 
   // initiation: a seed from S1 frame 0 pairs with the plot of frame 1.
-  if (want("initiation")) {
+  if constexpr (kAllTrackerPaths<F>) {
     TrackerPath<Tracker> p;
     p.name = "initiation";
     p.description = "1 seed + its second plot: two-point initiation of a tentative track";
@@ -374,7 +377,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths(const std::vector<s
   // worst_case: a full table (16 confirmed tracks) and a full frame (32
   // plots: one per track, 16 clutter plots far outside every gate, which
   // find no free slot).
-  if (want("worst_case")) {
+  {
     TrackerPath<Tracker> p;
     p.name = "worst_case";
     p.description = "16 confirmed tracks x 32 plots: 392 gate tests, 16 updates, 16 plots dropped, 16 reports";

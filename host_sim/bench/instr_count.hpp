@@ -15,7 +15,6 @@
 #define CALLGRIND_DUMP_STATS_AT(label) static_cast<void>(label)
 #endif
 
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -112,18 +111,15 @@ void count_filter(const CaseName& n, const std::vector<FrameSi>& s1) {
   }
 }
 
-/// Tracker paths of filter F: every class, or those named in `only`.
+/// Tracker paths of filter F.
 template <class F>
-void count_tracker(const CaseName& n, const std::vector<std::string>& only = {}) {
+void count_tracker(const CaseName& n) {
   using Tracker = BenchTracker<F>;
   const std::string base = std::string("tracker/") + n.filter + "/" + n.scalar + "/" + n.form + "/";
   bool any = false;
-  for (const char* cls : {"normal", "gated_out", "rejected", "initiation", "worst_case"}) {
-    const bool listed = only.empty() || std::find(only.begin(), only.end(), cls) != only.end();
-    any = any || (listed && wanted(base + cls));
-  }
+  for (const char* cls : {"normal", "gated_out", "rejected", "initiation", "worst_case"}) any = any || wanted(base + cls);
   if (!any) return;
-  const auto paths = make_tracker_paths<F>(only);
+  const auto paths = make_tracker_paths<F>();
   for (const auto& p : paths) {
     const std::string path = base + p.name;
     if (!wanted(path)) continue;

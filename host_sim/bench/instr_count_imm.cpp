@@ -11,7 +11,7 @@ namespace kestrel::bench {
 void count_imm_family(const std::vector<FrameSi>& s1) {
   for_each_imm_case([&]<class F>(const CaseName& n) {
     count_filter<F>(n, s1);
-    count_tracker<F>(n, {"normal", "worst_case"});
+    count_tracker<F>(n);  // normal and worst_case (kAllTrackerPaths)
   });
 }
 
