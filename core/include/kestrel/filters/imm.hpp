@@ -149,8 +149,8 @@ struct ImmParams {
   /// The switching matrix over dt seconds (header comment: sojourn times).
   /// Equals `switching` bit for bit at dt = switching_period_s, tends to
   /// the identity as dt -> 0 and to the jump proportions as dt grows; a
-  /// mode with p_ii = 1 stays absorbing. dt <= 0 gives the identity. Every
-  /// row is a probability vector for any finite dt. dt must be finite.
+  /// mode with p_ii = 1 stays absorbing. dt <= 0 (or NaN) gives the
+  /// identity. Every row is a probability vector for any dt.
   Matrix switching_over(Scalar dt) const {
     using T = ScalarTraits<Scalar>;
     if (!(switching_period_s > Scalar(0))) return switching;
