@@ -12,6 +12,9 @@
 // for_each_sigma_case() (a new family: a new function, and for
 // kestrel-instr-count a translation unit of its own, see instr_count.hpp)
 // (and kTrackerPaths<F> = false if it is measured as a filter only).
+// The radar IMM (for_each_imm_case()) is counted by kestrel-instr-count
+// only, with its own defaults (RadarImmParams, kestrel-sim's "imm") and two
+// tracker path classes: normal and worst_case.
 #pragma once
 
 #include <cmath>
@@ -25,6 +28,7 @@
 
 #include "bench/bench_inputs.hpp"
 #include "kestrel/filters/ekf.hpp"
+#include "kestrel/filters/imm_radar.hpp"
 #include "kestrel/filters/r2aekf.hpp"
 #include "kestrel/filters/sigma_point_filter.hpp"
 #include "kestrel/filters/sr_sigma_point_filter.hpp"
@@ -115,6 +119,14 @@ void for_each_sigma_case(Visitor&& visit) {
   visit.template operator()<SigmaCa<SrCdkf, double>>(CaseName{"srcdkf-ca", "double", "structured"});
 }
 
+/// Calls visit.template operator()<Filter>(CaseName) for the radar IMM
+/// (CV, CA and CT EKFs, each on its structured models) in double and float.
+template <class Visitor>
+void for_each_imm_case(Visitor&& visit) {
+  visit.template operator()<RadarImm<double>>(CaseName{"imm", "double", "structured"});
+  visit.template operator()<RadarImm<float>>(CaseName{"imm", "float", "structured"});
+}
+
 /// Every case: the EKF family, then the sigma-point filters.
 template <class Visitor>
 void for_each_filter_case(Visitor&& visit) {
@@ -132,17 +144,26 @@ inline RadarTrackerParams bench_params() {
   return p;
 }
 
-/// A filter of type F with the CA-2D/polar parameters p.
+/// A filter of type F with the CA-2D/polar parameters p. The IMM takes
+/// kestrel-sim's defaults (docs/imm.md) with p's sensor: its modes have
+/// their own noise, not p's qj.
 template <class F>
 F make_filter(const RadarTrackerParams& p) {
   using Scalar = typename F::Scalar;
-  using T = ScalarTraits<Scalar>;
-  typename F::MotionModel motion{};
-  motion.qj = T::from_double(p.qj);
-  typename F::MeasurementModel radar{};
-  radar.sigma_range_m = T::from_double(p.sigma_range_m);
-  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
-  return F(motion, radar);
+  if constexpr (requires { F::kModes; }) {
+    RadarImmParams ip;
+    ip.sigma_range_m = p.sigma_range_m;
+    ip.sigma_bearing_rad = p.sigma_bearing_rad;
+    return make_radar_imm<Scalar>(ip);
+  } else {
+    using T = ScalarTraits<Scalar>;
+    typename F::MotionModel motion{};
+    motion.qj = T::from_double(p.qj);
+    typename F::MeasurementModel radar{};
+    radar.sigma_range_m = T::from_double(p.sigma_range_m);
+    radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
+    return F(motion, radar);
+  }
 }
 
 template <class F>
@@ -267,8 +288,16 @@ std::unique_ptr<Tracker> warmed(std::unique_ptr<Tracker> t, const std::vector<Fr
   return t;
 }
 
+/// Whether every tracker path class is measured for F; the IMM's budgets
+/// hold two, normal and worst_case. A compile-time choice, so the EKF
+/// family's paths compile to what they were (a counted path's code must
+/// not move when a case is added: instr_count.hpp).
+template <class F>
+inline constexpr bool kAllTrackerPaths = !requires { F::kModes; };
+
 /// Every path class for filter F (see docs/performance.md for what each
-/// exercises). Throws if a path's defining condition does not hold.
+/// exercises; kAllTrackerPaths). Throws if a path's defining condition does
+/// not hold.
 template <class F>
 std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   using Tracker = BenchTracker<F>;
@@ -303,7 +332,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
 
   // gated_out: the next plot lands 0.1 rad off the track: outside its gate,
   // it starts a seed instead.
-  {
+  if constexpr (kAllTrackerPaths<F>) {
     TrackerPath<Tracker> p;
     p.name = "gated_out";
     p.description = "1 confirmed track, its plot 0.1 rad off: predict, gate miss, seed, coast, report";
@@ -318,7 +347,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
 
   // rejected: a full frame whose last plot is beyond the maximum range:
   // validation reads every plot before refusing (the longest refusal).
-  {
+  if constexpr (kAllTrackerPaths<F>) {
     TrackerPath<Tracker> p;
     p.name = "rejected";
     p.description = "full frame (32 plots), last one out of range: validated and refused (kOutOfRange)";
@@ -334,7 +363,7 @@ std::vector<TrackerPath<BenchTracker<F>>> make_tracker_paths() {
   }
 
   // initiation: a seed from S1 frame 0 pairs with the plot of frame 1.
-  {
+  if constexpr (kAllTrackerPaths<F>) {
     TrackerPath<Tracker> p;
     p.name = "initiation";
     p.description = "1 seed + its second plot: two-point initiation of a tentative track";

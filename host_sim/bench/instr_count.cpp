@@ -24,6 +24,7 @@ namespace kestrel::bench {
 // One translation unit per family (instr_count.hpp says why).
 void count_ekf_family(const std::vector<FrameSi>& s1);
 void count_sigma_family(const std::vector<FrameSi>& s1);
+void count_imm_family(const std::vector<FrameSi>& s1);
 }  // namespace kestrel::bench
 
 int main(int argc, char** argv) {
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
     const std::vector<FrameSi> s1 = s1_frames();
     count_ekf_family(s1);
     count_sigma_family(s1);
+    count_imm_family(s1);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-instr-count: %s\n", e.what());
     return 1;

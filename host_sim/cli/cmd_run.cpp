@@ -26,11 +26,12 @@ MonteCarloConfig config_from(const FilterChoice& f, std::size_t runs, std::uint6
   return c;
 }
 
-void print_files(const std::filesystem::path& dir, const std::string& filter, bool plotted) {
+void print_files(const std::filesystem::path& dir, const std::string& filter, const ScenarioReport& r) {
   const RunFileNames n = run_file_names(dir, filter);
   std::printf("wrote %s, %s, %s, %s", n.tracks_csv.c_str(), n.steps_csv.c_str(), n.runs_csv.c_str(),
               (dir / "summary.json").c_str());
-  if (plotted) std::printf(" and %s_{xy,error}.png", n.plot_prefix.c_str());
+  if (r.modes_written) std::printf(", %s", n.modes_csv.c_str());
+  if (r.plotted) std::printf(" and %s_{xy,error%s}.png", n.plot_prefix.c_str(), r.modes_plotted ? ",modes" : "");
   std::printf("\n");
 }
 }  // namespace
@@ -49,7 +50,7 @@ int cmd_run(const RunOptions& o) {
   print_table_header(stdout);
   print_table_row(stdout, report.row);
   print_continuity(stdout, report.row);
-  print_files(dir, report.row.filter, report.plotted);
+  print_files(dir, report.row.filter, report);
   if (!o.asterix_out.path.empty()) {
     // Run 0 again, its reports through a Cat062Sink as well: the run is
     // deterministic, so these are the reports of the track CSV above.

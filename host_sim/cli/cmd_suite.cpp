@@ -128,6 +128,7 @@ int cmd_suite(const SuiteOptions& o) {
         if (r.plotted) {
           const std::filesystem::path prefix = std::filesystem::relative(r.plot_prefix, root);
           row.figures = {prefix.string() + "_xy.png", prefix.string() + "_error.png"};
+          if (r.modes_plotted) row.figures.push_back(prefix.string() + "_modes.png");
         }
         report.radar.push_back(std::move(row));
       }

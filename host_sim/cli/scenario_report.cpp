@@ -52,6 +52,7 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
   write_track_csv(names.tracks_csv, mc.first.stream);
   write_step_csv(names.steps_csv, mc.first.steps, mc.first.frames, info.loss_threshold_m);
   write_runs_csv(names.runs_csv, mc.runs);
+  report.modes_written = write_modes_csv(names.modes_csv, mc.runs, mc.first.stream.mode_names);
   merge_summary_file(out_dir / "summary.json", context.scenario, name, report.entry);
   report.label = context.setup.label;
   report.plot_prefix = names.plot_prefix;
@@ -59,6 +60,11 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
     report.plotted = plot_run(names.steps_csv, names.tracks_csv, names.plot_prefix,
              info.name + " / " + context.setup.label + " / seed " + std::to_string(config.base_seed),
              info.loss_threshold_m);
+    if (report.modes_written) {
+      report.modes_plotted =
+          plot_modes(names.modes_csv, names.steps_csv, names.plot_prefix.string() + "_modes.png",
+                     info.name + " / " + name + " / seeds " + std::to_string(config.base_seed) + "+");
+    }
   }
   return report;
 }

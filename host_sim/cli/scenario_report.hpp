@@ -20,6 +20,8 @@ struct ScenarioReport {
   std::string label;     ///< The filter and its parameters ("EKF-CA (double), qj 160").
   std::filesystem::path plot_prefix;  ///< <prefix>_xy.png, <prefix>_error.png
   bool plotted = false;  ///< Both figures written by this run.
+  bool modes_written = false;  ///< <filter>_modes.csv written (a filter with modes).
+  bool modes_plotted = false;  ///< <prefix>_modes.png written by this run.
 };
 
 /// `tag` names the files and the summary entry (default: the filter's

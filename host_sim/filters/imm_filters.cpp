@@ -44,6 +44,8 @@ void apply(RadarImmParams& p, const std::string& item) {
     }
   } else if (key.size() == 3 && key[0] == 'p' && key[1] >= '0' && key[1] <= '2' && key[2] >= '0' && key[2] <= '2') {
     p.switching[key[1] - '0'][key[2] - '0'] = v;
+  } else if (key == "switch_period") {
+    p.switching_period_s = v;
   } else if (key == "mu_cv") {
     p.initial_probabilities[0] = v;
   } else if (key == "mu_ca") {
@@ -66,7 +68,9 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
   using Tracker = host::BoardRadarTracker<RadarImm<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(make_imm_tracker<Scalar>(options));
-  return run_stream(*tracker, std::move(stream), budget_ns);
+  StreamRunResult r = run_stream(*tracker, std::move(stream), budget_ns);
+  r.mode_names = {"cv", "ca", "ct"};  // RadarImm's mode order
+  return r;
 }
 
 FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
@@ -85,7 +89,8 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
                  {"mu0_ct", p.initial_probabilities[2]},
                  {"min_probability", p.min_probability},
                  {"accel_pad_sigma_mps2", p.accel_pad_sigma_mps2},
-                 {"turn_rate_pad_sigma_radps", p.turn_rate_pad_sigma_radps}}};
+                 {"turn_rate_pad_sigma_radps", p.turn_rate_pad_sigma_radps},
+                 {"switching_period_s", p.switching_period_s}}};
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       s.parameters["p" + std::to_string(i) + std::to_string(j)] = p.switching[i][j];

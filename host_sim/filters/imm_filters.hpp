@@ -8,6 +8,7 @@
 //   cv_sa, ca_qj, ct_sa, ct_sw          mode noise (RadarImmParams)
 //   p_stay                              every p_ii, the rest spread evenly
 //   pIJ (I, J in 0..2: 0 CV, 1 CA, 2 CT) one entry of the switching matrix
+//   switch_period                       the period the matrix is for, s (0: per predict)
 //   mu_cv, mu_ca, mu_ct                 initial mode probabilities
 //   min_prob, pad_a, pad_w              floor and padding sigmas
 #pragma once

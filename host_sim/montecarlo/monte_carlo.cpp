@@ -27,6 +27,15 @@ RunRecord record_of(const RunDetail& d) {
     if (!s.estimate.has_value()) continue;
     if (last_id != 0 && s.estimate->track_id != last_id) ++r.track_switches;
     last_id = s.estimate->track_id;
+    if (s.k >= d.stream.frames.size()) continue;
+    const FrameOutcome& f = d.stream.frames[s.k];
+    if (f.mode_probabilities.size() != f.tracks.size()) continue;  // a filter without modes
+    for (std::size_t i = 0; i < f.tracks.size(); ++i) {
+      if (f.tracks[i].track_id == s.estimate->track_id) {
+        r.modes.push_back(ModeSample{s.t_s, s.estimate->track_id, f.mode_probabilities[i]});
+        break;
+      }
+    }
   }
   r.continuity = compute_track_continuity(on_target_tracks(d));
   return r;

@@ -26,6 +26,13 @@ struct MonteCarloConfig {
   ScoringConfig scoring;
 };
 
+/// The mode probabilities of the scored track at one scored step.
+struct ModeSample {
+  double t_s = 0.0;            ///< Frame time, s.
+  std::uint32_t track_id = 0;  ///< The scored track.
+  std::vector<double> mu;      ///< In the order of StreamRunResult::mode_names.
+};
+
 /// The compact record of one run (the full detail is kept for run 0 only).
 struct RunRecord {
   std::uint64_t seed = 0;
@@ -35,6 +42,7 @@ struct RunRecord {
   std::size_t track_switches = 0;      ///< Scored frames whose track id differs from the previous scored one.
   std::size_t frames_not_ok = 0;       ///< Frames whose final status was not kOk.
   TrackContinuity continuity;          ///< One track on the target from confirmation on?
+  std::vector<ModeSample> modes;       ///< Per scored step with a track, for filters with modes (IMM).
 };
 
 struct MonteCarloResult {

@@ -6,11 +6,15 @@
 // by host::SteadyClock (targets/host/board.hpp). Everything the loop touches
 // is sized in the constructor, so run_to_end() makes no allocation (tests
 // assert it), and the frame bookkeeping is kept as plain records until
-// result() flattens it.
+// result() flattens it. For a filter with mode probabilities (the IMM) each
+// report's are read from the track table after the step, outside the timed
+// call.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <type_traits>
@@ -72,12 +76,24 @@ class ReplaySink {
   bool cat062_on_;
 };
 
+/// Filter::kModes for a filter with mode probabilities, else 0.
+template <class Filter>
+constexpr std::size_t mode_count() {
+  if constexpr (requires(const Filter& f) { f.mode_probabilities(); }) {
+    return static_cast<std::size_t>(Filter::kModes);
+  } else {
+    return 0;
+  }
+}
+
 template <class Tracker, class Feed = host::StreamFileFeed>
 class StreamRun {
  public:
   using Report = typename Tracker::Report;
   using Sink = ReplaySink<Report>;
   using Runner = host::BoardRunnerOver<Feed, Tracker, Sink>;
+  using Filter = decltype(Tracker::TrackT::filter);
+  static constexpr bool kHasModes = requires(const Filter& f) { f.mode_probabilities(); };
 
   /// @param stream wire frames back to back (Feed = StreamFileFeed) or
   ///        CAT048 data blocks back to back (Feed = AsterixFileFeed).
@@ -88,8 +104,10 @@ class StreamRun {
       : max_frames_(max_frames_of(stream)),
         feed_(std::move(stream)),
         sink_(max_frames_ * Tracker::Table::kMaxTracks, cat062),
-        runner_(feed_, clock_, tracker, hal::RadarAdapter{}, sink_, budget_ns) {
+        runner_(feed_, clock_, tracker, hal::RadarAdapter{}, sink_, budget_ns),
+        tracker_(&tracker) {
     records_.reserve(max_frames_);
+    if constexpr (kHasModes) modes_.reserve(max_frames_ * Tracker::Table::kMaxTracks);
   }
 
   /// Poll until the feed is exhausted. No allocation.
@@ -109,6 +127,7 @@ class StreamRun {
       r.first_report = first_report;
       r.end_report = sink_.size();
       records_.push_back(r);  // within the reserved capacity: a frame is at least kSmallestFrameBytes
+      if constexpr (kHasModes) record_modes(first_report, r.end_report);
     }
   }
 
@@ -129,6 +148,11 @@ class StreamRun {
       f.step_ns = r.step_ns;
       f.t_us = r.t_us;
       for (std::size_t i = r.first_report; i < r.end_report; ++i) f.tracks.push_back(host::to_track_row(reports[i]));
+      if constexpr (kHasModes) {
+        for (std::size_t i = r.first_report; i < r.end_report; ++i) {
+          f.mode_probabilities.emplace_back(modes_[i].begin(), modes_[i].end());
+        }
+      }
       out.frames.push_back(std::move(f));
     }
     return out;
@@ -179,12 +203,37 @@ class StreamRun {
     }
   }
 
+  static constexpr std::size_t kModes = mode_count<Filter>();
+  using ModeProbabilities = std::array<double, kModes>;
+
+  /// The mode probabilities of the tracks of reports [first, end), by id;
+  /// NaN for a report whose track is no longer in the table.
+  void record_modes(std::size_t first, std::size_t end) {
+    const std::span<const Report> reports = sink_.reports();
+    const auto& table = tracker_->tracks();
+    for (std::size_t i = first; i < end; ++i) {
+      ModeProbabilities mu;
+      mu.fill(std::numeric_limits<double>::quiet_NaN());
+      for (std::size_t slot = 0; slot < Tracker::Table::kMaxTracks; ++slot) {
+        if (!table.active(slot) || table[slot].id != reports[i].track_id) continue;
+        const auto& m = table[slot].filter.mode_probabilities();
+        for (std::size_t j = 0; j < kModes; ++j) {
+          mu[j] = ScalarTraits<typename Filter::Scalar>::to_double(m(static_cast<int>(j)));
+        }
+        break;
+      }
+      modes_.push_back(mu);  // within the reserved capacity: one per report
+    }
+  }
+
   std::size_t max_frames_;
   Feed feed_;
   host::SteadyClock clock_;
   Sink sink_;
   Runner runner_;
   std::vector<FrameRecord> records_;
+  const Tracker* tracker_;
+  std::vector<ModeProbabilities> modes_;  ///< One per report, in report order (filters with modes).
 };
 
 /// Build, run and flatten in one call, with the feed `input.format` names.

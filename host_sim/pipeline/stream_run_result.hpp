@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -46,6 +47,10 @@ struct FrameOutcome {
   std::uint64_t step_ns = 0;     ///< Convert + step time, ns (SteadyClock).
   std::int64_t t_us = 0;         ///< Frame time, us.
   std::vector<host::TrackRow> tracks;  ///< Reports published for this frame.
+  /// For a filter with mode probabilities (the IMM), those of each reported
+  /// track after this frame, parallel to `tracks`, in the filter's mode
+  /// order; empty for other filters.
+  std::vector<std::vector<double>> mode_probabilities;
 };
 
 struct StreamRunResult {
@@ -54,6 +59,9 @@ struct StreamRunResult {
   std::vector<std::uint8_t> cat062;  ///< CAT062 blocks of every report, when StreamInput::cat062 asked.
   std::uint32_t cat062_refused = 0;  ///< Reports not written: CAT062 cannot carry them, or the buffer was full.
   std::optional<host::AsterixFeedCounters> asterix;  ///< What the CAT048 feed found (ASTERIX input only).
+  /// Names of the modes of FrameOutcome::mode_probabilities ("cv", ...),
+  /// set by the filter's run function; empty without modes.
+  std::vector<std::string> mode_names;
 };
 
 }  // namespace kestrel::sim

@@ -8,6 +8,11 @@
       P_error.png  position error e_k over time with the loss threshold L
   plot_results.py summary --summary summary.json --out summary.png
       RMSE and peak error with their 95 % intervals per scenario and filter
+  plot_results.py modes --modes M.csv --steps S.csv --out P.png [--title X]
+      mean mode probabilities over the runs of M.csv (an IMM's
+      <filter>_modes.csv) against time, the truth's turns and speed changes
+      (from the truth of S.csv) marked along the top, and the truth's turn
+      rate and dv/dt below
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
 pandas). If matplotlib is missing it prints a warning and exits 0: plots are
@@ -117,6 +122,88 @@ def plot_summary(plt, args):
     plt.close(fig)
 
 
+def truth_manoeuvre(steps):
+    """Turn rate (rad/s) and rate of change of speed (m/s^2) of the truth at
+    each interior scored step, from central differences of its positions
+    (the truth is noise-free); NaN at the ends and across uneven steps."""
+    t = [number(r["time_s"]) for r in steps]
+    x = [number(r["truth_x_m"]) for r in steps]
+    y = [number(r["truth_y_m"]) for r in steps]
+    turn, dspeed = [math.nan] * len(t), [math.nan] * len(t)
+    for k in range(1, len(t) - 1):
+        h0, h1 = t[k] - t[k - 1], t[k + 1] - t[k]
+        if h0 <= 0 or abs(h1 - h0) > 1e-9 * h0:
+            continue
+        vx, vy = (x[k + 1] - x[k - 1]) / (2 * h0), (y[k + 1] - y[k - 1]) / (2 * h0)
+        ax, ay = (x[k + 1] - 2 * x[k] + x[k - 1]) / h0 ** 2, (y[k + 1] - 2 * y[k] + y[k - 1]) / h0 ** 2
+        v = math.hypot(vx, vy)
+        if v > 0:
+            dspeed[k] = (ax * vx + ay * vy) / v
+            turn[k] = (vx * ay - vy * ax) / (v * v)
+    return t, turn, dspeed
+
+
+def intervals(t, flags):
+    """[(t0, t1)] of the runs of True in flags, each widened by half a step."""
+    out, start = [], None
+    for k, f in enumerate(flags):
+        if f and start is None:
+            start = k
+        if (not f or k == len(flags) - 1) and start is not None:
+            end = k if f else k - 1
+            half = (t[1] - t[0]) / 2 if len(t) > 1 else 0
+            out.append((t[start] - half, t[end] + half))
+            start = None
+    return out
+
+
+def plot_modes(plt, args):
+    rows = read_rows(args.modes)
+    names = [c[3:] for c in (rows[0].keys() if rows else []) if c.startswith("mu_")]
+    if not rows or not names:
+        print(f"warning: {args.modes} holds no mode probabilities; no plot", file=sys.stderr)
+        return
+    by_t = {}
+    runs = set()
+    for r in rows:
+        runs.add(r["run"])
+        by_t.setdefault(round(number(r["time_s"]), 6), []).append([number(r["mu_" + n]) for n in names])
+    times = sorted(by_t)
+    means = [[math.fsum(v[j] for v in by_t[ti]) / len(by_t[ti]) for ti in times] for j in range(len(names))]
+
+    steps = read_rows(args.steps)
+    tt, turn, dspeed = truth_manoeuvre(steps) if len(steps) > 2 else ([], [], [])
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(11, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    if tt:
+        # Strips along the top, so the curves stay readable where the truth
+        # manoeuvres all the time (the S1 weave).
+        spans = ((intervals(tt, [abs(w) > args.turn_radps for w in turn]), 0.94, "tab:green",
+                  f"truth turning, |turn rate| > {args.turn_radps:g} rad/s"),
+                 (intervals(tt, [abs(a) > args.speed_mps2 for a in dspeed]), 0.88, "tab:red",
+                  f"truth speed changing, |dv/dt| > {args.speed_mps2:g} m/s$^2$"))
+        for spans_of, low, colour, label in spans:
+            for i, (a, b) in enumerate(spans_of):
+                ax.axvspan(a, b, ymin=low, ymax=low + 0.05, color=colour, alpha=0.6, lw=0,
+                           label=label if i == 0 else None)
+        ax2.plot(tt, [math.degrees(w) for w in turn], "-", color="tab:green", lw=1, label="turn rate [deg/s]")
+        ax2.plot(tt, dspeed, "-", color="tab:red", lw=1, label="dv/dt [m/s$^2$]")
+    colours = {"cv": "tab:blue", "ca": "tab:orange", "ct": "tab:purple"}
+    for j, n in enumerate(names):
+        ax.plot(times, means[j], "-", lw=1.5, color=colours.get(n), label=f"mean mu {n.upper()}")
+    ax.set_ylim(0, 1.0)
+    ax.set_ylabel("mode probability")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
+    ax.set_title(f"{args.title}: mean mode probabilities of the scored track ({len(runs)} runs)", fontsize=9)
+    ax2.set_ylabel("truth")
+    ax2.set_xlabel("time [s]")
+    ax2.grid(True, alpha=0.3)
+    ax2.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=120)
+    plt.close(fig)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="mode", required=True)
@@ -129,6 +216,13 @@ def main():
     s = sub.add_parser("summary")
     s.add_argument("--summary", required=True)
     s.add_argument("--out", required=True)
+    m = sub.add_parser("modes")
+    m.add_argument("--modes", required=True)
+    m.add_argument("--steps", required=True)
+    m.add_argument("--out", required=True)
+    m.add_argument("--title", default="kestrel-sim")
+    m.add_argument("--turn-radps", type=float, default=0.02, help="mark the truth's turns above this rate")
+    m.add_argument("--speed-mps2", type=float, default=2.0, help="mark the truth's speed changes above this")
     args = p.parse_args()
 
     plt = load_matplotlib()
@@ -136,6 +230,8 @@ def main():
         return 0
     if args.mode == "run":
         plot_run(plt, args)
+    elif args.mode == "modes":
+        plot_modes(plt, args)
     else:
         plot_summary(plt, args)
     return 0

@@ -43,6 +43,12 @@ bool plot_run(const std::filesystem::path& steps_csv, const std::filesystem::pat
                           prefix.string(), "--title", title, "--loss-threshold-m", std::to_string(loss_threshold_m)});
 }
 
+bool plot_modes(const std::filesystem::path& modes_csv, const std::filesystem::path& steps_csv,
+                const std::filesystem::path& png, const std::string& title) {
+  return run_plot_script({"modes", "--modes", modes_csv.string(), "--steps", steps_csv.string(), "--out", png.string(),
+                          "--title", title});
+}
+
 bool plot_summary(const std::filesystem::path& summary_json, const std::filesystem::path& png) {
   return run_plot_script({"summary", "--summary", summary_json.string(), "--out", png.string()});
 }

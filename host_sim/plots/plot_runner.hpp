@@ -20,6 +20,11 @@ bool run_plot_script(const std::vector<std::string>& args);
 bool plot_run(const std::filesystem::path& steps_csv, const std::filesystem::path& tracks_csv,
               const std::filesystem::path& prefix, const std::string& title, double loss_threshold_m);
 
+/// Mean mode probabilities over the runs of a modes CSV against time, with
+/// the truth's manoeuvres (from the steps CSV of run 0) shaded.
+bool plot_modes(const std::filesystem::path& modes_csv, const std::filesystem::path& steps_csv,
+                const std::filesystem::path& png, const std::string& title);
+
 /// Bar chart of the figures in a summary.json, per scenario and filter.
 bool plot_summary(const std::filesystem::path& summary_json, const std::filesystem::path& png);
 

@@ -13,7 +13,7 @@ namespace kestrel::sim {
 
 RunFileNames run_file_names(const std::filesystem::path& dir, const std::string& filter) {
   return RunFileNames{dir / (filter + "_tracks.csv"), dir / (filter + "_steps.csv"), dir / (filter + "_runs.csv"),
-                      dir / filter};
+                      dir / (filter + "_modes.csv"), dir / filter};
 }
 
 void write_track_csv(const std::filesystem::path& path, const StreamRunResult& run) {
@@ -50,6 +50,32 @@ void write_runs_csv(const std::filesystem::path& path, const std::vector<RunReco
                  static_cast<unsigned long long>(t.p99_ns), static_cast<unsigned long long>(t.max_ns));
   }
   if (std::ferror(f) != 0) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+bool write_modes_csv(const std::filesystem::path& path, const std::vector<RunRecord>& runs,
+                     const std::vector<std::string>& mode_names) {
+  bool any = false;
+  for (const RunRecord& r : runs) any = any || !r.modes.empty();
+  if (!any || mode_names.empty()) return false;
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "w"), &std::fclose);
+  if (!file) throw std::runtime_error("cannot create '" + path.string() + "'");
+  std::FILE* f = file.get();
+  std::fprintf(f, "run,seed,time_s,track_id");
+  for (const std::string& n : mode_names) std::fprintf(f, ",mu_%s", n.c_str());
+  std::fputc('\n', f);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    for (const ModeSample& m : runs[i].modes) {
+      std::fprintf(f, "%zu,%llu,%.6f,%u", i, static_cast<unsigned long long>(runs[i].seed), m.t_s, m.track_id);
+      for (std::size_t j = 0; j < mode_names.size(); ++j) {
+        const double v = j < m.mu.size() ? m.mu[j] : std::nan("");
+        std::fputc(',', f);
+        if (std::isfinite(v)) std::fprintf(f, "%.6g", v);
+      }
+      std::fputc('\n', f);
+    }
+  }
+  if (std::ferror(f) != 0) throw std::runtime_error("cannot write '" + path.string() + "'");
+  return true;
 }
 
 }  // namespace kestrel::sim

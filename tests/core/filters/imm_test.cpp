@@ -2,12 +2,15 @@
 // IMM: one mode equals that mode's EKF; mode probabilities sum to 1 and
 // follow a synthetic manoeuvre to the right model; refused input (NaN, a
 // covariance that is not positive definite, a mode that refuses its
-// update) leaves it bit-identical; no allocation; float follows double.
+// update) leaves it bit-identical; no allocation; float follows double;
+// the switching matrix over dt is the configured one at its period, keeps
+// p_ii^2 over two periods, and stays stochastic from 1 ms to 100 s.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>
+#include <type_traits>
 #include <vector>
 
 #include "kestrel/filters/ekf.hpp"
@@ -333,4 +336,127 @@ TEMPLATE_TEST_CASE("Scenario: an IMM predict and update allocate nothing", "[imm
   REQUIRE(updated == Status::kOk);
   CHECK(inn.status == Status::kOk);
   CHECK(allocations == 0);
+}
+
+namespace {
+
+/// A switching matrix with unequal rows and off-diagonal proportions, so a
+/// wrong share of the leaving probability shows.
+template <class S>
+typename kestrel::ImmParams<S, 3>::Matrix uneven_switching() {
+  typename kestrel::ImmParams<S, 3>::Matrix m;
+  m << S(0.8), S(0.15), S(0.05), S(0.1), S(0.85), S(0.05), S(0.2), S(0.1), S(0.7);
+  return m;
+}
+
+/// Round-off allowed per entry: a few ulp of the log, exp and share.
+template <class S>
+double entry_tolerance() {
+  return std::is_same_v<S, float> ? 1e-6 : 1e-13;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("Scenario: the switching matrix follows dt by mean sojourn times", "[imm][switching]", double,
+                   float) {
+  using S = TestType;
+  using Params = kestrel::ImmParams<S, 3>;
+  Params params;
+  params.switching = uneven_switching<S>();
+  params.switching_period_s = S(0.5);
+  REQUIRE(params.valid());
+  const double tol = entry_tolerance<S>();
+
+  GIVEN("dt equal to the period the matrix is given for") {
+    const auto m = params.switching_over(S(0.5));
+    THEN("it is the configured matrix bit for bit") {
+      CHECK(std::memcmp(m.data(), params.switching.data(), sizeof(S) * 9) == 0);
+    }
+  }
+  GIVEN("dt twice that period") {
+    const auto m = params.switching_over(S(1.0));
+    THEN("staying is staying twice, p_ii(2 T0) = p_ii(T0)^2, and leaving keeps its proportions") {
+      for (int i = 0; i < 3; ++i) {
+        const double p = double(params.switching(i, i));
+        CHECK(double(m(i, i)) == Approx(p * p).margin(tol));
+        for (int j = 0; j < 3; ++j) {
+          if (j == i) continue;
+          // (1 - p^2) / (1 - p) = 1 + p times the configured entry.
+          CHECK(double(m(i, j)) == Approx(double(params.switching(i, j)) * (1.0 + p)).margin(tol));
+        }
+      }
+    }
+    THEN("a mode is left more often than over one period, unlike a matrix applied once per predict") {
+      for (int i = 0; i < 3; ++i) CHECK(double(m(i, i)) < double(params.switching(i, i)) - 0.1);
+    }
+  }
+  GIVEN("a period of 0") {
+    params.switching_period_s = S(0);
+    THEN("the matrix applies once per predict whatever dt") {
+      const auto m = params.switching_over(S(3.0));
+      CHECK(std::memcmp(m.data(), params.switching.data(), sizeof(S) * 9) == 0);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Scenario: the scaled switching matrix stays stochastic from 1 ms to 100 s", "[imm][switching]",
+                   double, float) {
+  using S = TestType;
+  using Params = kestrel::ImmParams<S, 3>;
+  Params params;
+  params.switching = uneven_switching<S>();
+  params.switching_period_s = S(0.5);
+  const double tol = 4 * entry_tolerance<S>();
+  double previous_stay[3] = {2, 2, 2};
+  int checked = 0;
+  // 1e-3 s to 100 s in 101 log-spaced steps, and 0.5 s itself.
+  for (int k = 0; k <= 100; ++k) {
+    const S dt = S(std::pow(10.0, -3.0 + 5.0 * k / 100.0));
+    const auto m = params.switching_over(dt);
+    for (int i = 0; i < 3; ++i) {
+      double row = 0;
+      for (int j = 0; j < 3; ++j) {
+        INFO("dt " << double(dt) << " s, entry " << i << j << " = " << double(m(i, j)));
+        CHECK(std::isfinite(double(m(i, j))));
+        CHECK(double(m(i, j)) >= 0.0);
+        CHECK(double(m(i, j)) <= 1.0);
+        row += double(m(i, j));
+      }
+      INFO("dt " << double(dt) << " s, row " << i << " sums to " << row);
+      CHECK(row == Approx(1.0).margin(tol));
+      // Staying is less likely the longer the step.
+      CHECK(double(m(i, i)) <= previous_stay[i]);
+      previous_stay[i] = double(m(i, i));
+    }
+    ++checked;
+  }
+  CHECK(checked == 101);
+  const auto short_step = params.switching_over(S(1e-3));
+  const auto long_step = params.switching_over(S(100));
+  for (int i = 0; i < 3; ++i) {
+    CHECK(double(short_step(i, i)) > 0.999);  // 1 ms: almost surely no switch
+    CHECK(double(long_step(i, i)) < 1e-6);    // 100 s = 200 periods: almost surely left
+  }
+}
+
+TEMPLATE_TEST_CASE("Scenario: an IMM predict over two periods mixes with the matrix over two periods", "[imm][switching]",
+                   double, float) {
+  using S = TestType;
+  kestrel::RadarImmParams p;
+  p.switching[0][0] = 0.8, p.switching[0][1] = 0.15, p.switching[0][2] = 0.05;
+  p.switching[1][0] = 0.1, p.switching[1][1] = 0.85, p.switching[1][2] = 0.05;
+  p.switching[2][0] = 0.2, p.switching[2][1] = 0.1, p.switching[2][2] = 0.7;
+  p.initial_probabilities[0] = 0.6, p.initial_probabilities[1] = 0.3, p.initial_probabilities[2] = 0.1;
+  auto imm = kestrel::make_radar_imm<S>(p);
+  REQUIRE(imm.reset(initial_state<S>(), initial_cov<S>()) == Status::kOk);
+  const auto mu0 = imm.mode_probabilities();
+  REQUIRE(imm.predict(S(1.0)) == Status::kOk);
+  // Without an update the mode probabilities are the predicted c = P(dt)^T mu.
+  const auto expected = (imm.params().switching_over(S(1.0)).transpose() * mu0).eval();
+  const auto once = (imm.params().switching.transpose() * mu0).eval();
+  for (int j = 0; j < 3; ++j) {
+    CHECK(double(imm.mode_probabilities()(j)) == Approx(double(expected(j))).margin(1e-6));
+  }
+  // And that is not what one application of the 0.5 s matrix gives.
+  CHECK(std::abs(double(imm.mode_probabilities()(0)) - double(once(0))) > 0.02);
 }

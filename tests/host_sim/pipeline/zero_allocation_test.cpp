@@ -4,11 +4,14 @@
 // Tracker::step, sink publish - inside an AllocationGuard, and a raid run
 // with the multi-target GNN tracker. The stream is
 // built and the sink sized before the guard, as a board sizes its buffers
-// at start-up.
+// at start-up. An IMM run also records each report's mode probabilities
+// inside the loop, within storage sized in the constructor.
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <memory>
 
 #include "filters/ekf_ca.hpp"
+#include "filters/imm_filters.hpp"
 #include "kestrel/association/global_nearest_neighbour.hpp"
 #include "kestrel/host/board.hpp"
 #include "montecarlo/multi_run.hpp"
@@ -73,4 +76,34 @@ SCENARIO("A raid run with the multi-target GNN tracker allocates nothing", "[hos
       CHECK(allocations == 0);
     }
   }
+}
+
+SCENARIO("An IMM S1 run records mode probabilities without allocating", "[host_sim][alloc][imm]") {
+  using Tracker = kestrel::host::BoardRadarTracker<kestrel::RadarImm<double>>;
+  auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("s1")->generate(0).frames);
+  auto tracker = std::make_unique<Tracker>(kestrel::sim::make_imm_tracker<double>(kestrel::sim::FilterOptions{}));
+  kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);
+  std::size_t allocations = 0;
+  {
+    kestrel::test::AllocationGuard guard;
+    run.run_to_end();
+    allocations = guard.allocations();
+  }
+  CHECK(allocations == 0);
+  const kestrel::sim::StreamRunResult r = run.result();
+  REQUIRE(r.frames.size() == 300);
+  std::size_t reports = 0, valid = 0;
+  for (const auto& f : r.frames) {
+    REQUIRE(f.mode_probabilities.size() == f.tracks.size());
+    for (const auto& mu : f.mode_probabilities) {
+      ++reports;
+      REQUIRE(mu.size() == 3);
+      const double sum = mu[0] + mu[1] + mu[2];
+      if (std::isfinite(sum) && std::abs(sum - 1.0) < 1e-9 && mu[0] >= 0 && mu[1] >= 0 && mu[2] >= 0) ++valid;
+    }
+  }
+  // One confirmed track reported from the third frame on; every report's
+  // probabilities found in the table and summing to 1.
+  CHECK(reports >= 290);
+  CHECK(valid == reports);
 }

@@ -31,7 +31,13 @@
 // Time: predict() mixes and predicts (the IMM's interaction step); update()
 // filters and updates the mode probabilities. A predict not followed by an
 // update (a missed plot) leaves mu = c, the predicted mode probabilities.
-// The switching matrix is per predict() call (the nominal scan period).
+// The switching matrix is given for a period T0 (switching_period_s) and
+// scaled to each predict's dt by mean sojourn times: mode i is held for an
+// exponential time of mean tau_i = -T0 / ln p_ii(T0), so
+// p_ii(dt) = exp(-dt / tau_i) = p_ii(T0)^(dt / T0), and a switch away goes
+// to j in the configured proportions, p_ij(dt) = (1 - p_ii(dt)) p_ij(T0) /
+// (1 - p_ii(T0)). At dt = T0 the matrix is the configured one bit for bit
+// (docs/imm.md and docs/decisions.md say why this form).
 //
 // Numerics: likelihoods are combined in logs (ln L_j = -(d2_j + ln|S_j|)/2,
 // the common 2 pi term dropped) and shifted by their maximum before exp,
@@ -135,10 +141,44 @@ struct ImmParams {
   /// Standard deviation given to the turn rate of a mode without one (mean
   /// 0) and of the Output state at reset(), rad/s.
   Scalar turn_rate_pad_sigma_radps = Scalar(0.1);
+  /// The time step `switching` is given for, s (the nominal scan period).
+  /// predict(dt) uses switching_over(dt); 0 applies `switching` once per
+  /// predict() whatever dt.
+  Scalar switching_period_s = Scalar(0);
+
+  /// The switching matrix over dt seconds (header comment: sojourn times).
+  /// Equals `switching` bit for bit at dt = switching_period_s, tends to
+  /// the identity as dt -> 0 and to the jump proportions as dt grows; a
+  /// mode with p_ii = 1 stays absorbing. dt <= 0 (or NaN) gives the
+  /// identity. Every row is a probability vector for any dt.
+  Matrix switching_over(Scalar dt) const {
+    using T = ScalarTraits<Scalar>;
+    if (!(switching_period_s > Scalar(0))) return switching;
+    Matrix m = switching;
+    const Scalar steps = dt > Scalar(0) ? dt / switching_period_s : Scalar(0);
+    // p_ii^(dt/T0) as p_ii * exp(ln p_ii (dt/T0 - 1)): the exponent is
+    // exactly 0 at dt = T0, so the configured entries come back unchanged.
+    const Scalar excess = steps - Scalar(1);
+    const Scalar kMaxExponent(80);  // e^80 fits a float; beyond it the row is settled
+    for (int i = 0; i < kModes; ++i) {
+      const Scalar p = switching(i, i);
+      const Scalar leave = Scalar(1) - p;
+      if (!(leave > Scalar(0)) || !(p > Scalar(0))) continue;
+      Scalar y = T::deterministic_log(p) * excess;
+      if (y > kMaxExponent) y = kMaxExponent;
+      if (y < -kMaxExponent) y = -kMaxExponent;
+      Scalar stay = p * T::deterministic_exp(y);
+      if (stay > Scalar(1)) stay = Scalar(1);
+      const Scalar share = (Scalar(1) - stay) / leave;
+      for (int j = 0; j < kModes; ++j) m(i, j) = i == j ? stay : switching(i, j) * share;
+    }
+    return m;
+  }
 
   /// Entries in [0, 1], rows summing to 1 within 1e-4, a positive diagonal
   /// (so every c_j > 0), initial probabilities in [0, 1] summing to 1,
-  /// 0 < min_probability < 1 / kModes, positive pads.
+  /// 0 < min_probability < 1 / kModes, positive pads, a finite
+  /// switching_period_s >= 0.
   bool valid() const {
     const Scalar tol = Scalar(1e-4);
     for (int i = 0; i < kModes; ++i) {
@@ -153,7 +193,8 @@ struct ImmParams {
     const Scalar total = initial_probabilities.sum();
     return total > Scalar(1) - tol && total < Scalar(1) + tol && min_probability > Scalar(0) &&
            min_probability * Scalar(kModes) < Scalar(1) && accel_pad_sigma_mps2 > Scalar(0) &&
-           turn_rate_pad_sigma_radps > Scalar(0);
+           turn_rate_pad_sigma_radps > Scalar(0) && switching_period_s >= Scalar(0) &&
+           ScalarTraits<Scalar>::is_finite(switching_period_s);
   }
 };
 
@@ -239,17 +280,21 @@ class Imm {
     return Status::kOk;
   }
 
-  /// Interaction (mixing) and mode-conditioned prediction by dt seconds.
-  /// @return kOk; kNonFinite, kNotPositiveDefinite (a mode refused, or the
-  ///         combined covariance), kOutOfRange (some c_j not > 0: invalid
-  ///         switching matrix); the filter is unchanged on any refusal.
+  /// Interaction (mixing) and mode-conditioned prediction by dt seconds,
+  /// with the switching matrix over dt (ImmParams::switching_over).
+  /// @return kOk; kNonFinite (dt, a mode), kNotPositiveDefinite (a mode
+  ///         refused, or the combined covariance), kOutOfRange (some c_j
+  ///         not > 0: invalid switching matrix); the filter is unchanged on
+  ///         any refusal.
   [[nodiscard]] Status predict(Scalar dt) {
+    if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
     // Step 1: predicted mode probabilities c_j = sum_i p_ij mu_i.
-    const Probabilities c = params_.switching.transpose() * mu_;
+    const Mat<Scalar, kModes, kModes> p = params_.switching_over(dt);
+    const Probabilities c = p.transpose() * mu_;
     Mat<Scalar, kModes, kModes> mixing;  // (i, j): mu_i|j, step 1
     for (int j = 0; j < kModes; ++j) {
       if (!(c(j) > Scalar(0)) || !ScalarTraits<Scalar>::is_finite(c(j))) return Status::kOutOfRange;
-      for (int i = 0; i < kModes; ++i) mixing(i, j) = params_.switching(i, j) * mu_(i) / c(j);
+      for (int i = 0; i < kModes; ++i) mixing(i, j) = p(i, j) * mu_(i) / c(j);
     }
     ModeStates X;
     ModeCovs PX;

@@ -37,8 +37,11 @@ struct RadarImmParams {
   double ca_qj = 100.0;          ///< CA white-jerk PSD, m^2/s^5.
   double ct_sa_mps2 = 1.0;       ///< CT white acceleration sigma, m/s^2.
   double ct_sw_radps = 0.03;     ///< CT turn-rate random walk, rad/s per sqrt(s).
-  /// Switching matrix p_ij (row: from, column: to), per predict.
+  /// Switching matrix p_ij (row: from, column: to) over switching_period_s.
   double switching[3][3] = {{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}};
+  /// The period the matrix is given for, s: the scan period of S1/S2.
+  /// Other time steps scale it (ImmParams::switching_over); 0: per predict.
+  double switching_period_s = 0.5;
   double initial_probabilities[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};  ///< At reset().
   double min_probability = 1e-4;          ///< Floor of each mode probability.
   double accel_pad_sigma_mps2 = 10.0;     ///< Acceleration sigma of CV and CT when lifted.
@@ -69,6 +72,7 @@ RadarImm<S> make_radar_imm(const RadarImmParams& p) {
   ip.min_probability = T::from_double(p.min_probability);
   ip.accel_pad_sigma_mps2 = T::from_double(p.accel_pad_sigma_mps2);
   ip.turn_rate_pad_sigma_radps = T::from_double(p.turn_rate_pad_sigma_radps);
+  ip.switching_period_s = T::from_double(p.switching_period_s);
   return RadarImm<S>(h_ca, ip, ImmCvMode<S>(cv, h_cv), ImmCaMode<S>(ca, h_ca), ImmCtMode<S>(ct, h_ct));
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Deterministic atan2 for float and double: ScalarTraits' atan2, so every
 // bearing core computes (a radar's h(x), the CRPF's per-particle cost and
-// risk, paper 001 eqs. 5-6). Two reasons to own it, as prng.hpp owns
+// risk, paper 001 eqs. 5-6). Two reasons to own it, as exp_log.hpp owns
 // log/exp: libm's atan2 differs between C libraries (glibc, newlib), so a
 // run replayed on a board gave other bits than on the host; and glibc's
 // correctly rounded atan2 costs about 150 instructions plus a call, which

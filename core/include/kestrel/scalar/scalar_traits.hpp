@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // ScalarTraits<S>: the few operations core needs beyond + - * /, chosen at
 // compile time per scalar type (docs/models.md). double and float map to
-// <cmath>, except atan2, which is Kestrel's own (math/atan2.hpp); the
+// <cmath>, except atan2, which is Kestrel's own (math/atan2.hpp), and
+// deterministic_exp/deterministic_log (math/exp_log.hpp), for results that
+// must not depend on the C library; the
 // fixed-point Q type (kestrel/scalar/fixed_point.hpp) brings its
 // own specialisation with integer-only implementations. Every model and
 // filter calls these, never std:: math directly, so the scalar is a true
@@ -14,6 +16,7 @@
 #include <limits>
 
 #include "kestrel/math/atan2.hpp"
+#include "kestrel/math/exp_log.hpp"
 
 namespace kestrel {
 
@@ -42,6 +45,11 @@ struct FloatingScalarTraits {
   static F abs(F v) { return std::fabs(v); }
   static F log(F v) { return std::log(v); }
   static F exp(F v) { return std::exp(v); }
+  /// e^v and ln v (v > 0) with the same bits on every IEEE platform, unlike
+  /// libm's (glibc and newlib differ in the last bit). exp: |v| <= 700 in
+  /// double, 80 in float.
+  static F deterministic_exp(F v) { return detail::deterministic_exp(v); }
+  static F deterministic_log(F v) { return detail::deterministic_log(v); }
   static F max_value() { return std::numeric_limits<F>::max(); }
   /// (-pi, pi]: std::remainder gives [-pi, pi] with no loop; map -pi to +pi.
   /// Fast paths, bit for bit what remainder() returns: an angle already in
