@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "kestrel/hal/frame.hpp"
+#include "scenarios/radar_scenario.hpp"
 #include "scenarios/rng.hpp"
 
 namespace kestrel::sim {
@@ -15,24 +16,6 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kIntegrationStepS = 1e-3;
-
-double wrap_pi(double a) {
-  // (-pi, pi], as radar_scenario.cpp.
-  const double r = std::remainder(a, 2.0 * std::numbers::pi);
-  return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
-}
-
-/// Knuth's Poisson sampler (means of a few tens here).
-std::size_t poisson(Rng& r, double mean) {
-  const double limit = std::exp(-mean);
-  double p = 1.0;
-  std::size_t k = 0;
-  for (;;) {
-    p *= r.uniform();
-    if (p <= limit) return k;
-    ++k;
-  }
-}
 
 /// The S1/S2 sensor's sigmas (docs/scenarios.md), so the radar tracker's
 /// defaults fit every radar scenario.
@@ -111,7 +94,7 @@ ScenarioRun MultiTargetScenario::generate(std::uint64_t seed) const {
       p.bearing_rad = wrap_pi(std::atan2(s.y_m, s.x_m) + sensor_.sigma_bearing_rad * n_bearing);
       plots.emplace_back(p, static_cast<int>(i));
     }
-    const std::size_t n_clutter = sensor_.clutter_mean > 0.0 ? poisson(clutter_rng, sensor_.clutter_mean) : 0;
+    const std::size_t n_clutter = sensor_.clutter_mean > 0.0 ? clutter_rng.poisson(sensor_.clutter_mean) : 0;
     for (std::size_t c = 0; c < n_clutter; ++c) {
       RadarPlotSi p;
       // Uniform over range and bearing cells: a constant false-alarm rate per resolution cell.

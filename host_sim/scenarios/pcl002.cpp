@@ -117,17 +117,6 @@ bool simulate_drone(const PclScenarioConfig& c, std::uint64_t sub_seed, std::vec
   return out.size() == c.frames;
 }
 
-/// Knuth's Poisson sampler (mean up to a few hundred in double).
-std::size_t poisson(Rng& r, double mean) {
-  const double limit = std::exp(-mean);
-  double p = 1.0;
-  std::size_t k = 0;
-  for (;;) {
-    p *= r.uniform();
-    if (p <= limit) return k;
-    ++k;
-  }
-}
 
 std::int32_t to_wire_doppler_mhz(double fd_hz) {
   const double mhz = std::nearbyint(fd_hz * 1000.0);
@@ -209,7 +198,7 @@ PclScenarioRun generate_pcl(const PclScenarioConfig& c, std::uint64_t seed) {
       const double fd = tr.fd_hz + m.normal(c.sigma_fd_hz);
       cands.push_back(CandidateSi{rb, fd, 0.0, true});
     }
-    const std::size_t n_clutter = poisson(m, c.clutter_mean);
+    const std::size_t n_clutter = m.poisson(c.clutter_mean);
     for (std::size_t i = 0; i < n_clutter; ++i) {
       const double rb = m.uniform(0.0, c.clutter_rb_max_m);
       const double fd = m.uniform(-c.clutter_fd_max_hz, c.clutter_fd_max_hz);

@@ -9,13 +9,10 @@
 
 namespace kestrel::sim {
 
-namespace {
 double wrap_pi(double a) {
-  // (-pi, pi], the convention of the core's residual() and of docs/host_sim.md.
   const double r = std::remainder(a, 2.0 * std::numbers::pi);
   return r <= -std::numbers::pi ? r + 2.0 * std::numbers::pi : r;
 }
-}  // namespace
 
 double RadarNoise::range_sigma_at(double t_s) const {
   double sigma = sigma_range_m;

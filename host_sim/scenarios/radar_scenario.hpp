@@ -91,4 +91,8 @@ class RadarScenario final : public Scenario {
   RadarNoise noise_;
 };
 
+/// An angle in (-pi, pi], the convention of the core's residual() and of
+/// docs/host_sim.md: every simulated bearing is wrapped by it.
+double wrap_pi(double a);
+
 }  // namespace kestrel::sim

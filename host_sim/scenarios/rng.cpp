@@ -18,4 +18,15 @@ double Rng::normal() {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
 }
 
+std::size_t Rng::poisson(double mean) {
+  const double limit = std::exp(-mean);
+  double p = 1.0;
+  std::size_t k = 0;
+  for (;;) {
+    p *= uniform();
+    if (p <= limit) return k;
+    ++k;
+  }
+}
+
 }  // namespace kestrel::sim

@@ -6,6 +6,7 @@
 // the conversions to uniform and Gaussian variates are written here.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <random>
 
@@ -24,6 +25,10 @@ class Rng {
   double normal();
   /// Normal with the given standard deviation.
   double normal(double sigma) { return sigma * normal(); }
+  /// Poisson with the given mean, Knuth's product of uniforms (one uniform
+  /// per count plus one; exact for the means of clutter counts, up to a few
+  /// hundred, where exp(-mean) is still a normal double).
+  std::size_t poisson(double mean);
 
  private:
   std::mt19937_64 engine_;
