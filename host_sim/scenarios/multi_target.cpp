@@ -119,6 +119,20 @@ ScenarioRun MultiTargetScenario::generate(std::uint64_t seed) const {
   return run;
 }
 
+/// The raid's and the formation's sensor: the S1/S2 sigmas, Pd 0.9, and
+/// Poisson clutter of the given mean per frame over the sector 5-40 km,
+/// 45-135 deg that both scenarios fly in.
+MultiTargetSensor surveillance_sector(double clutter_mean) {
+  MultiTargetSensor sensor = paper000_sensor();
+  sensor.detection_probability = 0.9;
+  sensor.clutter_mean = clutter_mean;
+  sensor.range_min_m = 5000.0;
+  sensor.range_max_m = 40000.0;
+  sensor.bearing_min_rad = 45.0 * kDeg;
+  sensor.bearing_max_rad = 135.0 * kDeg;
+  return sensor;
+}
+
 std::unique_ptr<Scenario> make_crossing() {
   // Both inbound at 200 m/s, headings -80 and -100 deg, mirror images
   // about the y axis: their ranges are equal all along, so only bearing
@@ -145,13 +159,7 @@ std::unique_ptr<Scenario> make_raid() {
   // 250 m/s from 32 km to 12 km; 1 km is 6 cross-range sigmas at 32 km.
   ScenarioInfo info{"raid", "Raid of 12 inbound targets, T 1 s, Pd 0.9, Poisson(10) clutter per frame",
                     hal::FrameKind::kRadar, 1.0, 80, 300.0};
-  MultiTargetSensor sensor = paper000_sensor();
-  sensor.detection_probability = 0.9;
-  sensor.clutter_mean = 10.0;
-  sensor.range_min_m = 5000.0;
-  sensor.range_max_m = 40000.0;
-  sensor.bearing_min_rad = 45.0 * kDeg;
-  sensor.bearing_max_rad = 135.0 * kDeg;
+  const MultiTargetSensor sensor = surveillance_sector(10.0);
   std::vector<TargetMotion> m;
   for (int row = 0; row < 3; ++row) {
     for (int col = 0; col < 4; ++col) {
@@ -169,13 +177,7 @@ std::unique_ptr<Scenario> make_formation_split() {
   ScenarioInfo info{"formation-split",
                     "Formation of 3 (400 m abreast, inbound) splitting at t = 40 s, T 1 s, Pd 0.9, Poisson(5) clutter",
                     hal::FrameKind::kRadar, 1.0, 90, 300.0};
-  MultiTargetSensor sensor = paper000_sensor();
-  sensor.detection_probability = 0.9;
-  sensor.clutter_mean = 5.0;
-  sensor.range_min_m = 5000.0;
-  sensor.range_max_m = 40000.0;
-  sensor.bearing_min_rad = 45.0 * kDeg;
-  sensor.bearing_max_rad = 135.0 * kDeg;
+  const MultiTargetSensor sensor = surveillance_sector(5.0);
   // Heading -90 deg: turning right (clockwise, negative rate) heads west (-x).
   TargetMotion west = straight(-400.0, 28000.0, 220.0, -90.0);
   west.turns.push_back(TurnLeg{40.0, 50.0, -3.0 * kDeg});
