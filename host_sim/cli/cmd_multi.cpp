@@ -14,6 +14,7 @@
 #include "metrics/monte_carlo_stats.hpp"
 #include "montecarlo/multi_run.hpp"
 #include "pipeline/worker_pool.hpp"
+#include "plots/plot_runner.hpp"
 #include "scenarios/registry.hpp"
 
 namespace kestrel::sim::cli {
@@ -147,6 +148,7 @@ CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
   cmd->add_option("--persistence", o.persistence_steps, "Steps a changed assignment must hold to count as a swap")
       ->capture_default_str();
   cmd->add_option("--budget-us", o.budget_us, "Step budget for overrun counting, us")->capture_default_str();
+  cmd->add_flag("!--no-plots", o.plots, "Do not run the plot script");
   return cmd;
 }
 
@@ -215,6 +217,11 @@ int cmd_multi(const MultiOptions& o) {
   }
   write_steps_csv(dir / "multi_steps.csv", info, sets);
   std::printf("wrote %s/{multi_runs.csv, multi_steps.csv}\n", dir.c_str());
+  if (o.plots && plot_gospa(dir / "multi_steps.csv", dir / "multi_gospa.png",
+                            info.name + " / seeds " + std::to_string(o.seed) + ".." +
+                                std::to_string(o.seed + o.runs - 1))) {
+    std::printf("wrote %s/multi_gospa.png\n", dir.c_str());
+  }
   return 0;
 }
 

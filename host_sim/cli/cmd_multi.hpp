@@ -33,6 +33,7 @@ struct MultiOptions {
   double order = 2.0;
   std::size_t persistence_steps = 3;
   double budget_us = 1000.0;
+  bool plots = true;  ///< multi_gospa.png from multi_steps.csv.
 };
 
 CLI::App* add_multi_command(CLI::App& app, MultiOptions& options);

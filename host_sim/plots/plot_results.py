@@ -13,6 +13,9 @@
       <filter>_modes.csv) against time, the truth's turns and speed changes
       (from the truth of S.csv) marked along the top, and the truth's turn
       rate and dv/dt below
+  plot_results.py gospa --steps multi_steps.csv --out P.png [--title X]
+      mean GOSPA and OSPA per step of each associator `kestrel-sim multi`
+      ran (e.g. GNN and the oracle)
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
 pandas). If matplotlib is missing it prints a warning and exits 0: plots are
@@ -204,6 +207,32 @@ def plot_modes(plt, args):
     plt.close(fig)
 
 
+def plot_gospa(plt, args):
+    rows = read_rows(args.steps)
+    names = [c[len("gospa_m_"):] for c in (rows[0].keys() if rows else []) if c.startswith("gospa_m_")]
+    if not rows or not names:
+        print(f"warning: {args.steps} holds no GOSPA columns; no plot", file=sys.stderr)
+        return False
+    t = [number(r["time_s"]) for r in rows]
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(11, 6), sharex=True)
+    colours = {"gnn": "tab:blue", "nn": "tab:orange", "oracle": "tab:green"}
+    for n in names:
+        ax.plot(t, [number(r["gospa_m_" + n]) for r in rows], "-", lw=1.2, color=colours.get(n), label=n)
+        ax2.plot(t, [number(r["ospa_m_" + n]) for r in rows], "-", lw=1.2, color=colours.get(n), label=n)
+    ax.set_ylabel("mean GOSPA [m]")
+    ax2.set_ylabel("mean OSPA [m]")
+    ax2.set_xlabel("time [s]")
+    for a in (ax, ax2):
+        a.grid(True, alpha=0.3)
+        a.set_ylim(bottom=0)
+        a.legend(loc="upper right", fontsize=8)
+    ax.set_title(f"{args.title}: GOSPA and OSPA per step, mean over runs", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(args.out, dpi=120)
+    plt.close(fig)
+    return True
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = p.add_subparsers(dest="mode", required=True)
@@ -223,6 +252,10 @@ def main():
     m.add_argument("--title", default="kestrel-sim")
     m.add_argument("--turn-radps", type=float, default=0.02, help="mark the truth's turns above this rate")
     m.add_argument("--speed-mps2", type=float, default=2.0, help="mark the truth's speed changes above this")
+    g = sub.add_parser("gospa")
+    g.add_argument("--steps", required=True, help="multi_steps.csv of `kestrel-sim multi`")
+    g.add_argument("--out", required=True)
+    g.add_argument("--title", default="kestrel-sim")
     args = p.parse_args()
 
     plt = load_matplotlib()
@@ -232,6 +265,8 @@ def main():
         plot_run(plt, args)
     elif args.mode == "modes":
         plot_modes(plt, args)
+    elif args.mode == "gospa":
+        return 0 if plot_gospa(plt, args) else 1
     else:
         plot_summary(plt, args)
     return 0

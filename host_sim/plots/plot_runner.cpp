@@ -49,6 +49,13 @@ bool plot_modes(const std::filesystem::path& modes_csv, const std::filesystem::p
                           "--title", title});
 }
 
+bool plot_gospa(const std::filesystem::path& steps_csv, const std::filesystem::path& png, const std::string& title) {
+  std::error_code ec;
+  std::filesystem::remove(png, ec);  // a stale figure must not pass for a new one
+  return run_plot_script({"gospa", "--steps", steps_csv.string(), "--out", png.string(), "--title", title}) &&
+         std::filesystem::exists(png, ec);
+}
+
 bool plot_summary(const std::filesystem::path& summary_json, const std::filesystem::path& png) {
   return run_plot_script({"summary", "--summary", summary_json.string(), "--out", png.string()});
 }
