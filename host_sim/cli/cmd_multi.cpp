@@ -136,6 +136,8 @@ CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
   cmd->add_option("--jobs,-j", o.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
   cmd->add_option("--out,-o", o.out, "Output directory (default results/<scenario>-multi)");
   cmd->add_option("--associator", o.associator, "nn, gnn or oracle (default: gnn for more than one target)");
+  cmd->add_option("--filter,-f", o.filter, "ekf-ca or imm (CV/CA/CT, docs/imm.md; its keys are imm.KEY)")
+      ->capture_default_str();
   cmd->add_flag("--compare-oracle", o.compare_oracle, "Also run the oracle associator on the same seeds");
   cmd->add_option("--qj", o.qj, "EKF-CA white-jerk PSD, m^2/s^5 (default 1.6)");
   cmd->add_option("--config", o.config,
@@ -161,6 +163,7 @@ int cmd_multi(const MultiOptions& o) {
   if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
   MultiRunConfig config;
   config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
+  config.filter = multi_filter_by_name(o.filter);
   std::vector<Setting> settings;
   if (!o.config.empty()) settings = read_config_file(o.config);
   for (const std::string& s : o.sets) settings.push_back(parse_setting(s, "--set"));
@@ -187,9 +190,15 @@ int cmd_multi(const MultiOptions& o) {
 
   const McResult main = run_mc(*scenario, o, config);
   const RadarTrackerParams p = radar_tracker_params(config.options);
-  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), EKF-CA qj %g, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
+  char filter[64];
+  if (config.filter == MultiFilter::kImm) {
+    std::snprintf(filter, sizeof filter, "IMM CV/CA/CT (CA qj %g)", imm_params(config.options).ca_qj);
+  } else {
+    std::snprintf(filter, sizeof filter, "EKF-CA qj %g", p.qj);
+  }
+  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), %s, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
               info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
-              static_cast<unsigned long long>(o.seed + o.runs - 1), p.qj, unsigned{p.confirm_m},
+              static_cast<unsigned long long>(o.seed + o.runs - 1), filter, unsigned{p.confirm_m},
               unsigned{p.confirm_n}, p.max_speed_mps, multi_associator_name(config.associator), o.cutoff_m, o.order);
   const Summary s = summarise(main.runs);
   print_summary(multi_associator_name(config.associator), s);

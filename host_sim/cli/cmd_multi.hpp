@@ -24,6 +24,7 @@ struct MultiOptions {
   unsigned jobs = 1;
   std::string out;              ///< Default results/<scenario>-multi.
   std::string associator;       ///< nn, gnn, oracle; empty: gnn with more than one target.
+  std::string filter = "ekf-ca";  ///< ekf-ca or imm.
   bool compare_oracle = false;  ///< Also run the oracle associator on the same seeds.
   std::optional<double> qj;             ///< --qj: wins over --set and --config.
   std::string config;                   ///< --config FILE (filters/settings.hpp keys).

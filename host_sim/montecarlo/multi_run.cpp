@@ -19,8 +19,13 @@ namespace {
 
 template <template <class, std::size_t, std::size_t> class Associator>
 StreamRunResult run_with(const MultiRunConfig& config, std::vector<std::uint8_t> bytes,
-                         const typename MultiTargetTracker<Associator>::AssociatorParams& params) {
-  auto tracker = make_multi_target_tracker<Associator>(config, params);
+                         const typename MultiTargetTracker<EkfCa<double>, Associator>::AssociatorParams& params) {
+  // The associator's parameters do not depend on the filter.
+  if (config.filter == MultiFilter::kImm) {
+    auto tracker = make_multi_target_tracker<RadarImm<double>, Associator>(config, params);
+    return run_stream(*tracker, StreamInput(std::move(bytes)), config.budget_ns);
+  }
+  auto tracker = make_multi_target_tracker<EkfCa<double>, Associator>(config, params);
   return run_stream(*tracker, StreamInput(std::move(bytes)), config.budget_ns);
 }
 
@@ -41,6 +46,14 @@ const char* multi_associator_name(MultiAssociator a) {
   }
   return "?";
 }
+
+MultiFilter multi_filter_by_name(const std::string& name) {
+  if (name == "ekf-ca") return MultiFilter::kEkfCa;
+  if (name == "imm") return MultiFilter::kImm;
+  throw std::invalid_argument("unknown filter '" + name + "' for multi (known: ekf-ca, imm)");
+}
+
+const char* multi_filter_name(MultiFilter f) { return f == MultiFilter::kImm ? "imm" : "ekf-ca"; }
 
 MultiAssociator default_multi_associator(const ScenarioInfo& info) {
   return info.targets > 1 ? MultiAssociator::kGlobalNearestNeighbour : MultiAssociator::kNearestNeighbour;

@@ -13,11 +13,14 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "filters/filter_registry.hpp"
+#include "filters/imm_filters.hpp"
 #include "filters/settings.hpp"
 #include "kestrel/association/chi_square.hpp"
+#include "kestrel/filters/imm_radar.hpp"
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 #include "metrics/multi_target_metrics.hpp"
@@ -38,8 +41,16 @@ const char* multi_associator_name(MultiAssociator a);
 /// GNN when the scenario has more than one target, nearest neighbour otherwise.
 MultiAssociator default_multi_associator(const ScenarioInfo& info);
 
+/// The radar filters `multi` runs: EKF-CA, or the IMM (CV/CA/CT, docs/imm.md)
+/// with its defaults and the `imm.KEY` settings.
+enum class MultiFilter { kEkfCa, kImm };
+
+MultiFilter multi_filter_by_name(const std::string& name);
+const char* multi_filter_name(MultiFilter f);
+
 struct MultiRunConfig {
   MultiAssociator associator = MultiAssociator::kGlobalNearestNeighbour;
+  MultiFilter filter = MultiFilter::kEkfCa;
   /// qj and the radar tracker's keys (filters/settings.hpp): defaults,
   /// then --config and --set. The confirmed-track gate is the board's
   /// unless gate_d2 is given.
@@ -53,36 +64,43 @@ struct MultiRunConfig {
 
 /// The tracker of a multi-target run: EKF-CA with two-point initiation and
 /// M-of-N, kMultiMaxTracks tracks, the wire's 32 plots, the associator given.
-template <template <class, std::size_t, std::size_t> class Associator>
-using MultiTargetTracker = Tracker<EkfCa<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>,
+template <class Filter, template <class, std::size_t, std::size_t> class Associator>
+using MultiTargetTracker = Tracker<Filter, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>,
                                    kMultiMaxTracks, hal::kMaxRadarPlots, Associator>;
 
-/// Build it with the radar tracker's defaults and the overrides of
-/// `config`; confirmed and tentative tracks gated as on a board (with
-/// several targets and false alarms an ungated track takes whatever plot
-/// is nearest). On the heap: the table of 64 tracks is large.
-template <template <class, std::size_t, std::size_t> class Associator>
-std::unique_ptr<MultiTargetTracker<Associator>> make_multi_target_tracker(
-    const MultiRunConfig& config, const typename MultiTargetTracker<Associator>::AssociatorParams& params = {}) {
-  using T = MultiTargetTracker<Associator>;
+/// The filter every track starts from, by the config's settings.
+template <class Filter>
+Filter multi_target_filter(const MultiRunConfig& config) {
+  if constexpr (std::is_same_v<Filter, RadarImm<double>>) {
+    return make_radar_imm<double>(imm_params(config.options));
+  } else {
+    const RadarTrackerParams p = radar_tracker_params(config.options);
+    CaMotion<double> motion;
+    motion.qj = p.qj;
+    CaPolarRadar<double> radar;
+    radar.sigma_range_m = p.sigma_range_m;
+    radar.sigma_bearing_rad = p.sigma_bearing_rad;
+    return EkfCa<double>(motion, radar);
+  }
+}
+
+template <class Filter, template <class, std::size_t, std::size_t> class Associator>
+std::unique_ptr<MultiTargetTracker<Filter, Associator>> make_multi_target_tracker(
+    const MultiRunConfig& config,
+    const typename MultiTargetTracker<Filter, Associator>::AssociatorParams& params = {}) {
+  using T = MultiTargetTracker<Filter, Associator>;
   const RadarTrackerParams p = radar_tracker_params(config.options);
-  CaMotion<double> motion;
-  motion.qj = p.qj;
-  CaPolarRadar<double> radar;
-  radar.sigma_range_m = p.sigma_range_m;
-  radar.sigma_bearing_rad = p.sigma_bearing_rad;
-  const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{radar, p.max_speed_mps,
+  const Filter prototype = multi_target_filter<Filter>(config);
+  const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{prototype.measurement(), p.max_speed_mps,
                                                                       p.init_accel_sigma_mps2};
   typename T::Config tc = radar_tracker_config<double>(p);
   FilterOptions gate = config.options;
   gate.board_gate = true;
   apply_gate_options<double>(gate, tc);
   if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;
-  return std::make_unique<T>(EkfCa<double>(motion, radar), init, tc, typename T::ManagerT{}, params);
+  return std::make_unique<T>(prototype, init, tc, typename T::ManagerT{}, params);
 }
 
-/// Each plot's true origin by frame time (us on the wire): what the oracle
-/// associator is told.
 struct OracleLabels {
   std::map<std::int64_t, std::vector<int>> origins;
 };

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <set>
+#include <stdexcept>
 #include <utility>
 
 #include "montecarlo/multi_run.hpp"
@@ -70,4 +71,45 @@ SCENARIO("The oracle associator takes no false alarm", "[host_sim][multitarget]"
     CHECK(d.metrics.gospa_m.size() == s->info().steps);
     CHECK(d.steps.back().tracks.size() >= 10);
   }
+}
+
+SCENARIO("The IMM runs in the multi-target tracker and holds the crossing pair", "[host_sim][multitarget][imm]") {
+  CHECK(multi_filter_by_name("imm") == MultiFilter::kImm);
+  CHECK(multi_filter_by_name("ekf-ca") == MultiFilter::kEkfCa);
+  CHECK_THROWS_AS(multi_filter_by_name("ukf"), std::invalid_argument);
+  const auto s = make_scenario("crossing");
+  MultiRunConfig config;
+  config.filter = MultiFilter::kImm;
+  // The setting docs/multitarget.md reports for the IMM (chosen on these
+  // tuning seeds): a stickier switching matrix than the S1/S2 default.
+  config.options.imm = {"p_stay=0.98"};
+  config.options.radar = {{"confirm_m", 4.0}, {"confirm_n", 5.0}, {"max_speed_mps", 400.0}};
+  std::size_t swaps = 0;
+  for (std::uint64_t seed = 100000; seed < 100020; ++seed) {
+    const MultiRunDetail d = run_multi_once(*s, seed, config);
+    REQUIRE(d.steps.size() == s->info().steps);
+    CHECK(d.steps.back().tracks.size() == 2);
+    CHECK(d.metrics.false_tracks == 0);
+    swaps += d.metrics.swaps;
+  }
+  THEN("20 runs, no track swap") { CHECK(swaps == 0); }
+}
+
+SCENARIO("On the raid the IMM's GOSPA is below EKF-CA's on the same seeds", "[host_sim][multitarget][imm]") {
+  const auto s = make_scenario("raid");
+  MultiRunConfig ekf;
+  ekf.options.radar = {{"confirm_m", 5.0}, {"confirm_n", 6.0}, {"max_speed_mps", 400.0}};
+  ekf.gate_tentative = kestrel::GateProbability::k99;
+  MultiRunConfig imm = ekf;
+  imm.filter = MultiFilter::kImm;
+  imm.options.imm = {"p_stay=0.98"};
+  double gospa_ekf = 0.0;
+  double gospa_imm = 0.0;
+  for (std::uint64_t seed = 100000; seed < 100010; ++seed) {
+    gospa_ekf += run_multi_once(*s, seed, ekf).metrics.mean_gospa_m;
+    gospa_imm += run_multi_once(*s, seed, imm).metrics.mean_gospa_m;
+  }
+  // 200 report runs: 277 against 346 m (docs/multitarget.md); a tenth less
+  // over 10 tuning seeds leaves room for seed-to-seed spread.
+  THEN("by more than a tenth over 10 runs") { CHECK(gospa_imm < 0.9 * gospa_ekf); }
 }
