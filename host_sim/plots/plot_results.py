@@ -26,6 +26,7 @@ import csv
 import json
 import math
 import sys
+import textwrap
 
 
 def load_matplotlib():
@@ -47,6 +48,11 @@ def number(cell):
 def read_rows(path):
     with open(path, newline="") as f:
         return list(csv.DictReader(f))
+
+
+def wrapped(title, width=90):
+    """A long title (a filter's full setup) on several lines, never cut at the figure's edge."""
+    return "\n".join(textwrap.wrap(title, width))
 
 
 def plot_run(plt, args):
@@ -76,7 +82,7 @@ def plot_run(plt, args):
     ax.set_aspect("equal", adjustable="datalim")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
-    ax.set_title(f"{args.title}: x-y (run 0)")
+    ax.set_title(wrapped(f"{args.title}: x-y (run 0)"), fontsize=9)
     fig.tight_layout()
     fig.savefig(f"{args.out_prefix}_xy.png", dpi=120)
     plt.close(fig)
@@ -92,7 +98,7 @@ def plot_run(plt, args):
     ax.set_ylabel("error [m]")
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
-    ax.set_title(f"{args.title}: position error (run 0)")
+    ax.set_title(wrapped(f"{args.title}: position error (run 0)"), fontsize=9)
     fig.tight_layout()
     fig.savefig(f"{args.out_prefix}_error.png", dpi=120)
     plt.close(fig)
