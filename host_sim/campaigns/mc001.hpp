@@ -16,7 +16,7 @@
 // SplitMix64 hash of (c, r, f). A run depends on nothing else, so its record
 // is the same whatever thread computes it or which shard it falls in; the
 // summary reduces the records in (cell, run, filter) order, so a single run,
-// any --threads, and merged shards give the same table bit for bit. Only the
+// any --jobs, and merged shards give the same table bit for bit. Only the
 // timing differs (it is measured, not computed).
 #pragma once
 

@@ -43,7 +43,7 @@ void add_montecarlo_commands(CLI::App& app, MonteCarloOptions& o, MergeOptions& 
   mc_cmd->add_option("--campaign", o.campaign, "Campaign (mc001: paper 001's noise grid, docs/scenarios.md)")
       ->capture_default_str();
   mc_cmd->add_option("--runs,-n", o.runs, "Runs per cell (seeds 0..runs-1)")->capture_default_str();
-  mc_cmd->add_option("--jobs,--threads,-j", o.threads, "Worker threads (default: every core; results do not depend on it)");
+  mc_cmd->add_option("--jobs,-j,--threads", o.threads, "Worker threads (default: every core; results do not depend on it; --threads is the old name)");
   mc_cmd->add_option("--shard", o.shard, "Run only shard K of N (1-based, e.g. 2/8); join the outputs with merge");
   mc_cmd->add_option("--out,-o", o.out, "Output directory (default results/mc001, a shard results/mc001/shard-K-of-N)");
   mc_cmd->add_flag("!--no-plots", o.plots, "Do not run the plot script");

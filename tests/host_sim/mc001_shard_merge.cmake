@@ -17,9 +17,9 @@ function(sim)
   endif()
 endfunction()
 
-sim(montecarlo --campaign mc001 --runs ${runs} --threads 2 --no-plots --no-progress --out "${OUT}/single")
+sim(montecarlo --campaign mc001 --runs ${runs} --jobs 2 --no-plots --no-progress --out "${OUT}/single")
 foreach(k 1 2 3)
-  sim(montecarlo --campaign mc001 --runs ${runs} --threads 1 --shard ${k}/3 --no-plots --no-progress
+  sim(montecarlo --campaign mc001 --runs ${runs} --jobs 1 --shard ${k}/3 --no-plots --no-progress
       --out "${OUT}/shard-${k}")
 endforeach()
 # Shards given out of order: merge sorts them by their run ranges.

@@ -69,6 +69,24 @@ constexpr const char* to_string(Status s) {
 /// Number of distinct Status values (for per-status counters).
 inline constexpr std::uint8_t kStatusCount = static_cast<std::uint8_t>(Status::kTimeJumpedForward) + 1;
 
+/// Propagate a failure: evaluates the expression (a Status) once and
+/// returns it from the enclosing function unless it is kOk. A macro because
+/// only a macro can return from its caller; variadic so that template
+/// arguments need no extra parentheses.
+#define KESTREL_TRY(...)                                                                               \
+  do {                                                                                                  \
+    if (const ::kestrel::Status kestrel_try_status_ = (__VA_ARGS__); kestrel_try_status_ != ::kestrel::Status::kOk) \
+      return kestrel_try_status_;                                                                       \
+  } while (false)
+
+/// The same, returning `on_error(status)` instead: a filter's fail(), which
+/// records the status in its diagnostics before returning it.
+#define KESTREL_TRY_OR(on_error, ...)                                                                  \
+  do {                                                                                                  \
+    if (const ::kestrel::Status kestrel_try_status_ = (__VA_ARGS__); kestrel_try_status_ != ::kestrel::Status::kOk) \
+      return on_error(kestrel_try_status_);                                                             \
+  } while (false)
+
 /// A status plus a value that is meaningful only when the status is kOk.
 /// T must be default-constructible; no exceptions, no heap.
 template <class T>

@@ -258,7 +258,7 @@ class ChannelGatedEkf {
     }
 
     if (kept == 0) return Status::kOk;  // every channel gated or absent: predict-only
-    if (const Status s = ekf_.update(z, R, kept); s != Status::kOk) return fail(s);
+    KESTREL_TRY_OR(fail, ekf_.update(z, R, kept));
     diag_.fused_channels = kept;
     diag_.nis = ekf_.diagnostics().nis;
     diag_.fused = true;

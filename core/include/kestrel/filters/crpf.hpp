@@ -155,8 +155,7 @@ class Crpf {
   [[nodiscard]] Status reset(const State& x, const Cov& P) {
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     Cov L;
-    const Status st = cholesky_semidefinite<Scalar, kStateDim>(symmetrised(P), L);
-    if (st != Status::kOk) return st;
+    KESTREL_TRY(cholesky_semidefinite<Scalar, kStateDim>(symmetrised(P), L));
     const NormalGenerator<Scalar> normal_before = normal_;
     State* next = xs_[1 - cur_];
     for (int i = 0; i < kParticles; ++i) {
@@ -256,8 +255,7 @@ class Crpf {
     }
     if (!predicted_) {
       // Update without a predict: dt = 0, the prediction is the cloud itself.
-      const Status st = predict(Scalar(0));
-      if (st != Status::kOk) return fail(st);
+      KESTREL_TRY_OR(fail, predict(Scalar(0)));
     }
     const Innov in = innovation(z, R);  // diagnostics: against the predicted estimate
     const KickFactor L = kick_factor(pending_dt_);

@@ -258,7 +258,7 @@ class Imm {
   [[nodiscard]] Status reset(const State& x, const Cov& P) {
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     auto output = output_;
-    if (const Status s = output.reset(x, P); s != Status::kOk) return s;
+    KESTREL_TRY(output.reset(x, P));
     CommonState xc;
     CommonCov Pc;
     lift<Layout, kStateDim>(output.x(), output.P(), xc, Pc);
@@ -315,7 +315,7 @@ class Imm {
       typename Mode<kJ>::Cov Pj;
       project<typename Mode<kJ>::Layout, Mode<kJ>::kStateDim>(x0, P0, xj, Pj);
       auto& mode = std::get<kJ>(modes);
-      if (const Status r = mode.reset(xj, Pj); r != Status::kOk) return r;
+      KESTREL_TRY(mode.reset(xj, Pj));
       return mode.predict(dt);
     });
     if (s != Status::kOk) return s;
@@ -367,8 +367,7 @@ class Imm {
     const Scalar top = log_posterior.maxCoeff();
     Probabilities w;
     for (int j = 0; j < kModes; ++j) w(j) = ScalarTraits<Scalar>::exp(log_posterior(j) - top);
-    const Status c = commit(modes, floored(w), mixing_);
-    if (c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, commit(modes, floored(w), mixing_));
     log_likelihood_ = log_posterior;
     diag_.fused_all(combined.nu, combined.S.diagonal(), combined.d2);
     return Status::kOk;
@@ -482,12 +481,12 @@ class Imm {
       Pc += mu(j) * (PX[static_cast<std::size_t>(j)] + d * d.transpose());
     }
     Pc = symmetrised(Pc);
-    if (const Status s = state_status(xc, Pc); s != Status::kOk) return s;
+    KESTREL_TRY(state_status(xc, Pc));
     State x;
     Cov P;
     project<Layout, kStateDim>(xc, Pc, x, P);
     auto output = output_;
-    if (const Status s = output.reset(x, P); s != Status::kOk) return s;
+    KESTREL_TRY(output.reset(x, P));
 
     modes_ = modes;
     output_ = output;

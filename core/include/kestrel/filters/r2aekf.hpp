@@ -348,8 +348,7 @@ class R2Aekf {
     // The EKF update with the final R.
     const Scalar px = ekf_.x()(Layout::kX);
     const Scalar py = ekf_.x()(Layout::kY);
-    const Status s = ekf_.update(z, R_used);
-    if (s != Status::kOk) return fail(s);
+    KESTREL_TRY_OR(fail, ekf_.update(z, R_used));
 
     // Step 5: manoeuvre indicators, with the velocity frame of the update.
     const Vec<Scalar, 2> v(ekf_.x()(Layout::kVx), ekf_.x()(Layout::kVy));

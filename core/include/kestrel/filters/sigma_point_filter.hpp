@@ -135,12 +135,11 @@ class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet
   [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
     diag_.fused = false;
     Moments m;
-    const Status st = moments(z, R, m);
-    if (st != Status::kOk) return fail(st);
+    KESTREL_TRY_OR(fail, moments(z, R, m));
     const Mat<Scalar, kStateDim, kMeasDim> K = sigma::gain(m.llt_S, m.Pxz);
     const State x = x_ + K * m.nu;
     const Cov P = symmetrised(P_ - K * m.S * K.transpose());
-    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, state_status(x, P));
     if (Eigen::LLT<Cov>(P).info() != Eigen::Success) return fail(Status::kNotPositiveDefinite);
     x_ = x;
     P_ = P;
@@ -177,7 +176,7 @@ class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet
 
   /// Commit a predicted x- and P-, or return kNonFinite and keep the filter.
   Status commit_prediction(const State& x, const Cov& P) {
-    if (const Status c = state_status(x, P); c != Status::kOk) return c;
+    KESTREL_TRY(state_status(x, P));
     x_ = x;
     P_ = P;
     return Status::kOk;

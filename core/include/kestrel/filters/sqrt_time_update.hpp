@@ -51,8 +51,7 @@ template <BlockDiagonalMotion M>
   const Mat<S, d, d> Q1 = motion.axis_process_noise(dt);
   if (!all_finite(Q1)) return Status::kNonFinite;
   Mat<S, d, d> L1;
-  const Status st = cholesky_semidefinite<S, d, M::kStateDim>(Q1, L1);
-  if (st != Status::kOk) return st;
+  KESTREL_TRY(cholesky_semidefinite<S, d, M::kStateDim>(Q1, L1));
   Sq.setZero();
   structure::static_for<0, kAxes>([&](auto ia) {
     constexpr int i = decltype(ia)::value;

@@ -82,8 +82,7 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
       // (sqrt_time_update.hpp), never the n x n Q.
       if (!ScalarTraits<Scalar>::is_finite(dt)) return Status::kNonFinite;
       Cov Sq;
-      const Status sq = sigma::block_sqrt_process_noise(motion_, dt, Sq);
-      if (sq != Status::kOk) return sq;
+      KESTREL_TRY(sigma::block_sqrt_process_noise(motion_, dt, Sq));
       return predict_affine(dt, Sq);
     } else {
       return predict(dt, motion_.process_noise(dt));
@@ -95,8 +94,7 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
   [[nodiscard]] Status predict(Scalar dt, const Cov& Q) {
     if (!ScalarTraits<Scalar>::is_finite(dt) || !all_finite(Q)) return Status::kNonFinite;
     Cov Sq;
-    const Status sq = cholesky_semidefinite<Scalar, kStateDim>(Q, Sq);
-    if (sq != Status::kOk) return sq;
+    KESTREL_TRY(cholesky_semidefinite<Scalar, kStateDim>(Q, Sq));
     if constexpr (kAffinePredict) {
       return predict_affine(dt, Sq);
     } else {
@@ -104,8 +102,7 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
       const auto Y = sigma::propagate(motion_, X, dt);
       const State x = sigma::state_mean(Y, w_.wi);
       Cov S;
-      const Status st = w_.sqrt_covariance(Y, x, Sq, S);
-      if (st != Status::kOk) return st;
+      KESTREL_TRY(w_.sqrt_covariance(Y, x, Sq, S));
       if (!all_finite(x) || !all_finite(S)) return Status::kNonFinite;
       commit(x, S);
       return Status::kOk;
@@ -136,8 +133,7 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
   [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {
     diag_.fused = false;
     Moments m;
-    const Status st = moments(z, R, m);
-    if (st != Status::kOk) return fail(st);
+    KESTREL_TRY_OR(fail, moments(z, R, m));
     // K^T = Sy^-T (Sy^-1 Pxz^T).
     const Mat<Scalar, kMeasDim, kStateDim> Kt = solve_lower_transposed<Scalar, kMeasDim, kStateDim>(
         m.Sy, solve_lower<Scalar, kMeasDim, kStateDim>(m.Sy, m.Pxz.transpose()));
@@ -145,8 +141,7 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
     const State x = x_ + K * m.nu;
     Cov S = Sx_;
     const Mat<Scalar, kStateDim, kMeasDim> U = K * m.Sy;
-    const Status down = cholesky_rank_update<Scalar, kStateDim, kMeasDim>(S, U, Scalar(-1));
-    if (down != Status::kOk) return fail(down);
+    KESTREL_TRY_OR(fail, cholesky_rank_update<Scalar, kStateDim, kMeasDim>(S, U, Scalar(-1)));
     if (!all_finite(x)) return fail(Status::kNonFinite);
     commit(x, S);
     diag_.fused_all(m.nu, (m.Sy * m.Sy.transpose()).diagonal(), solve_lower<Scalar, kMeasDim, 1>(m.Sy, m.nu).squaredNorm());
@@ -182,13 +177,11 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
   Status moments(const MeasVec& z, const MeasCov& R, Moments& m) const {
     if (!all_finite(z) || !all_finite(R)) return Status::kNonFinite;
     MeasCov Sr;
-    const Status sr = cholesky_semidefinite<Scalar, kMeasDim>(symmetrised(R), Sr);
-    if (sr != Status::kOk) return sr;
+    KESTREL_TRY(cholesky_semidefinite<Scalar, kMeasDim>(symmetrised(R), Sr));
     const auto X = sigma::draw<Scalar, kStateDim>(x_, Sx_, w_.spread);
     const auto Z = sigma::measure_drawn(measurement_, X, Sx_);
     const MeasVec z_mean = sigma::measurement_mean(measurement_, Z, w_.wi);
-    const Status st = w_.sqrt_moments(measurement_, X, x_, Sx_, Z, z_mean, Sr, m.Sy, m.Pxz);
-    if (st != Status::kOk) return st;
+    KESTREL_TRY(w_.sqrt_moments(measurement_, X, x_, Sx_, Z, z_mean, Sr, m.Sy, m.Pxz));
     for (int i = 0; i < kMeasDim; ++i) {
       if (!(m.Sy(i, i) > Scalar(0))) return Status::kNotPositiveDefinite;
     }

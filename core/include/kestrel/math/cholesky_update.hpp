@@ -87,8 +87,7 @@ template <class S, int kN, int kM>
 [[nodiscard]] Status cholesky_rank_update(Mat<S, kN, kN>& L, const Mat<S, kN, kM>& U, S w) {
   Mat<S, kN, kN> out = L;
   for (int j = 0; j < kM; ++j) {
-    const Status st = cholesky_rank1_update<S, kN>(out, U.col(j), w);
-    if (st != Status::kOk) return st;
+    KESTREL_TRY(cholesky_rank1_update<S, kN>(out, U.col(j), w));
   }
   L = out;
   return Status::kOk;
