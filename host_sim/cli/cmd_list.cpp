@@ -8,6 +8,8 @@
 #include "filters/filter_registry.hpp"
 #include "filters/settings.hpp"
 #include "scenarios/registry.hpp"
+#include "scenarios/pcl002.hpp"
+#include "scenarios/sensor_kind.hpp"
 #include "scenarios/uw003.hpp"
 
 namespace kestrel::sim::cli {
@@ -22,20 +24,27 @@ int cmd_list(bool settings) {
     }
     return 0;
   }
-  std::printf("radar scenarios (run, timing, generate; every radar filter below):\n");
+  // Which commands take each kind: run and replay dispatch on it
+  // (scenarios/sensor_kind.hpp); timing, sweep and suite's radar part are radar only.
+  std::printf("radar scenarios (run, timing, sweep, generate, replay of their streams; every radar filter below):\n");
   for (const ScenarioEntry& e : scenario_registry()) {
     const auto s = e.make();
     const ScenarioInfo& i = s->info();
     std::printf("  %-6s %s (L = %g m)\n", std::string(e.name).c_str(), i.description.c_str(), i.loss_threshold_m);
   }
-  std::printf("radar filters (run, replay, timing, suite):\n");
+  std::printf("radar filters (run, replay of radar streams, plot CSVs and CAT048, timing, suite):\n");
   for (const FilterEntry& f : filter_registry()) {
     std::printf("  %-13s %s\n", std::string(f.name).c_str(), std::string(f.description).c_str());
   }
-  std::printf("PCL scenarios (pcl, generate; the PCL tracker with --associator nn|gnn|pda, --manager m-of-n|score):\n"
-              "  pcl002 pcl002-hard\n");
-  std::printf("sonar scenarios (uw, generate; the underwater tracker):\n ");
+  std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor):\n ");
+  for (const std::string& n : pcl_scenario_names()) std::printf(" %s", n.c_str());
+  std::printf("\n  filter %s: the PCL tracker (with `pcl`: --associator nn|gnn|pda, --manager m-of-n|score)\n",
+              std::string(kPclFilterName).c_str());
+  std::printf("sonar scenarios (run, uw, generate; replay --stream of their streams, --scenario picks the "
+              "installation):\n ");
   for (const std::string& n : uw_scenario_names()) std::printf(" %s", n.c_str());
+  std::printf("\n  filter %s: the underwater tracker (its options on `uw`)\n", std::string(kSonarFilterName).c_str());
+  std::printf("multi-target radar scenarios (crossing, raid, formation-split above): multi only");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");
   return 0;

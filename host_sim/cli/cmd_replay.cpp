@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
-// `kestrel-sim replay`: run a filter over recorded data, a wire stream file,
+// `kestrel-sim replay`: run a tracker over recorded data, a wire stream file,
 // a radar plot CSV (docs/host_sim.md) or an ASTERIX CAT048 recording, through
-// the same board loop as the simulation. With a truth CSV the run is scored
-// like a scenario run; with --asterix-out its reports are also CAT062.
+// the same board loop as the simulation. A radar run takes a radar filter and,
+// with a truth CSV, is scored like a scenario run; with --asterix-out its
+// reports are also CAT062. A PCL or sonar stream runs the tracker of its kind
+// with a scenario's sensor parameters, unscored.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
+#include <set>
 #include <stdexcept>
 
 #include "cli/commands.hpp"
@@ -17,26 +21,24 @@
 #include "csv/step_csv.hpp"
 #include "csv/truth_csv.hpp"
 #include "filters/filter_registry.hpp"
+#include "montecarlo/pcl_run.hpp"
 #include "montecarlo/single_run.hpp"
+#include "montecarlo/uw_run.hpp"
 #include "plots/plot_runner.hpp"
+#include "report/pcl_files.hpp"
+#include "report/results_table.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_json.hpp"
+#include "report/uw_files.hpp"
+#include "scenarios/sensor_kind.hpp"
 #include "stream/asterix_stream.hpp"
 #include "stream/quantise.hpp"
 #include "stream/stream_writer.hpp"
+#include "timing/step_timing.hpp"
 
 namespace kestrel::sim::cli {
 
 namespace {
-
-const char* frame_kind_name(hal::FrameKind kind) {
-  switch (kind) {
-    case hal::FrameKind::kRadar: return "radar";
-    case hal::FrameKind::kSonar: return "sonar";
-    case hal::FrameKind::kPcl: return "PCL";
-  }
-  return "unknown";
-}
 
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -82,14 +84,151 @@ nlohmann::json asterix_json(const AsterixReadCounts& c) {
           {"plots_over_capacity", c.reader.dropped_over_capacity}};
 }
 
+nlohmann::json status_counts_json(const hal::RunnerStats& s) {
+  nlohmann::json j = nlohmann::json::object();
+  for (std::uint8_t i = 0; i < kStatusCount; ++i) {
+    if (s.by_status[i] != 0) j[to_string(static_cast<Status>(i))] = s.by_status[i];
+  }
+  return j;
+}
+
+nlohmann::json step_ns_json(const StepTiming& t) {
+  return {{"min", t.min_ns},   {"median", t.median_ns},   {"p99", t.p99_ns},         {"max", t.max_ns},
+          {"mean", t.mean_ns}, {"steps", t.steps},        {"budget_ns", t.budget_ns}, {"overruns", t.overruns}};
+}
+
+/// What every PCL or sonar replay reports, whichever tracker ran.
+struct OtherKindResult {
+  hal::RunnerStats stats;
+  std::vector<std::uint64_t> step_ns;
+  std::size_t frames_not_ok = 0;
+  std::filesystem::path tracks_csv;
+  nlohmann::json entry;  ///< Kind-specific summary fields.
+  std::string counts;    ///< Kind-specific line for stdout.
+};
+
+OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
+                           std::uint64_t budget_ns, const std::filesystem::path& dir) {
+  const PclScenarioConfig sc = pcl_config_by_name(scenario_name);
+  const PclTrackerParams params = pcl_params_for(sc);
+  const TrackerPolicies policies{};  // pcl's defaults: nearest neighbour, M-of-N
+  // No reference frames: which candidate is the target's is unknown here.
+  const PclRunOutput out = run_pcl_stream(std::move(bytes), {}, sc, params, policies, budget_ns);
+  OtherKindResult r;
+  r.stats = out.stats;
+  r.tracks_csv = dir / "pcl_tracks.csv";
+  std::vector<double> time_s;
+  std::size_t rows = 0, frames_with_track = 0;
+  std::set<std::uint32_t> ids;
+  for (const PclFrameOutcome& f : out.frames) {
+    time_s.push_back(f.t_s);
+    if (f.stepped) r.step_ns.push_back(f.step_ns);
+    if (f.status != Status::kOk) ++r.frames_not_ok;
+    rows += f.tracks.size();
+    frames_with_track += f.tracks.empty() ? 0 : 1;
+    for (const PclTrackRow& t : f.tracks) ids.insert(t.id);
+  }
+  write_pcl_tracks_csv(r.tracks_csv, out.frames, time_s, pcl_lambda_m(sc), nullptr, PclTolerance{});
+  r.entry["sensor"] = pcl_scenario_json(sc);
+  r.entry["tracker"] = pcl_tracker_json(params, policies);
+  r.entry["confirmed_track_rows"] = rows;
+  r.entry["frames_with_confirmed_track"] = frames_with_track;
+  r.entry["track_ids"] = ids.size();
+  r.counts = "confirmed-track rows " + std::to_string(rows) + " in " + std::to_string(frames_with_track) +
+             " frames, " + std::to_string(ids.size()) + " track ids";
+  return r;
+}
+
+OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& scenario_name, std::uint64_t budget_ns,
+                          const std::filesystem::path& dir) {
+  const UwScenarioConfig sc = uw_config_by_name(scenario_name);
+  const UnderwaterTrackerParams params = uw_params_for(sc);
+  const UwRunOutput out = run_uw_stream(std::move(bytes), params, budget_ns);
+  OtherKindResult r;
+  r.stats = out.stats;
+  r.tracks_csv = dir / "uw_track.csv";
+  std::vector<double> time_s;
+  std::size_t reported = 0, fixes = 0, predict_only = 0;
+  std::set<std::uint32_t> ids;
+  for (const UwFrameOutcome& f : out.frames) {
+    time_s.push_back(f.t_s);
+    if (f.stepped) r.step_ns.push_back(f.step_ns);
+    if (f.status != Status::kOk) ++r.frames_not_ok;
+    if (f.reported) {
+      ++reported;
+      ids.insert(f.track_id);
+    }
+    fixes += f.initialised ? 1 : 0;
+    predict_only += f.predict_only ? 1 : 0;
+  }
+  write_uw_track_csv(r.tracks_csv, out.frames, time_s);
+  r.entry["sensor"] = uw_scenario_json(sc);
+  r.entry["tracker"] = uw_params_json(params);
+  r.entry["frames_with_estimate"] = reported;
+  r.entry["track_ids"] = ids.size();
+  r.entry["initialisations"] = fixes;
+  r.entry["predict_only_frames"] = predict_only;
+  r.counts = "frames with an estimate " + std::to_string(reported) + ", track ids " + std::to_string(ids.size()) +
+             ", (re)initialisations " + std::to_string(fixes) + ", predict-only frames " + std::to_string(predict_only);
+  return r;
+}
+
+/// `replay --stream` of a PCL or sonar stream: its one tracker through the
+/// same board loop, with the sensor parameters of a scenario of its kind.
+int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<std::uint8_t> bytes,
+                      std::size_t frame_count, const std::string& source) {
+  const std::string kind_name = sensor_kind_name(kind);
+  check_filter_fits(o.filter, kind,
+                    source + ": its " + std::to_string(frame_count) + " frames are " + kind_name + " frames");
+  const std::string scenario = o.scenario.empty() ? (kind == hal::FrameKind::kPcl ? "pcl002" : "uw003") : o.scenario;
+  const std::optional<hal::FrameKind> scenario_is = scenario_kind(scenario);
+  if (scenario_is != kind) {
+    throw std::invalid_argument(
+        "--scenario '" + scenario + "' is " +
+        (scenario_is ? std::string("a ") + sensor_kind_name(*scenario_is) + " scenario" : std::string("no scenario")) +
+        "; " + source + " holds " + kind_name + " frames (" + kind_name +
+        " scenarios: " + join_names(scenario_names_of_kind(kind)) + ")");
+  }
+  const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  const std::string filter(kind == hal::FrameKind::kPcl ? kPclFilterName : kSonarFilterName);
+  OtherKindResult r = kind == hal::FrameKind::kPcl ? replay_pcl(std::move(bytes), scenario, budget_ns, dir)
+                                                   : replay_uw(std::move(bytes), scenario, budget_ns, dir);
+  const StepTiming timing = summarise_step_times(r.step_ns, budget_ns);
+  const std::string sensor_scenario = r.entry["sensor"]["name"].get<std::string>();
+
+  nlohmann::json entry = r.entry;
+  entry["kind"] = kind_name;
+  entry["filter"] = filter;
+  entry["source"] = source;
+  entry["sensor_scenario"] = sensor_scenario;
+  entry["frames"] = r.stats.frames;
+  entry["steps"] = r.stats.steps;
+  entry["frames_not_ok"] = r.frames_not_ok;
+  entry["status_counts"] = status_counts_json(r.stats);
+  entry["step_ns"] = step_ns_json(timing);
+  entry["tracks_csv"] = r.tracks_csv.string();
+  entry["scored"] = false;  // --truth scoring of PCL and sonar replays is not implemented
+  merge_summary_file(dir / "summary.json", "replay", filter, entry);
+
+  std::printf("replay %s: %s stream, %s tracker (%s) with the sensor parameters of %s%s\n", source.c_str(),
+              kind_name.c_str(), kind == hal::FrameKind::kPcl ? "PCL" : "underwater", filter.c_str(), sensor_scenario.c_str(),
+              o.scenario.empty() ? " (the default; --scenario chooses another)" : "");
+  print_status_counts(r.stats);
+  std::printf("%s\n", r.counts.c_str());
+  print_timing(stdout, "replay " + source, timing);
+  std::printf("not scored (no --truth for %s streams). wrote %s, %s\n", kind_name.c_str(), r.tracks_csv.c_str(),
+              (dir / "summary.json").c_str());
+  return 0;
+}
+
 }  // namespace
 
 int cmd_replay(const ReplayOptions& o) {
   if (int{!o.stream.empty()} + int{!o.csv.empty()} + int{!o.asterix.empty()} != 1) {
     throw std::invalid_argument("give exactly one of --stream, --csv and --asterix");
   }
-  const FilterEntry& filter = find_filter(o.filter.filter);
-
   std::vector<std::uint8_t> bytes;
   std::vector<MeasurementFrame> frames;
   std::string source;
@@ -126,6 +265,23 @@ int cmd_replay(const ReplayOptions& o) {
     frames = decode_stream(bytes, skipped);
     if (skipped > 0) std::printf("note: %zu frames of %s did not decode (see the status counts)\n", skipped, source.c_str());
   }
+  // One kind per stream: a mixed one would have its other frames refused
+  // one by one, a run of half the data that looks like a result.
+  const FrameKindCounts kinds = count_frame_kinds(frames);
+  if (kinds.kinds() > 1) {
+    throw std::runtime_error(source + ": mixes sensor kinds: " + kinds.describe() + " frames" +
+                             (kinds.undecoded > 0 ? " (and " + std::to_string(kinds.undecoded) + " that did not decode)"
+                                                  : std::string()) +
+                             "; replay takes a stream of one kind");
+  }
+  const hal::FrameKind kind = kinds.pcl > 0     ? hal::FrameKind::kPcl
+                              : kinds.sonar > 0 ? hal::FrameKind::kSonar
+                                                : hal::FrameKind::kRadar;
+  if (kind != hal::FrameKind::kRadar && !o.truth.empty()) {
+    throw std::invalid_argument(std::string("--truth: scoring a replay of ") + sensor_kind_name(kind) +
+                                " frames is not implemented; replay " + source +
+                                " without it (tracks and status counts), or score the scenario with `kestrel-sim run`");
+  }
   const std::vector<TruthSample> truth =
       o.truth.empty() ? std::vector<TruthSample>{} : read_truth_csv(std::filesystem::path(o.truth));
   if (frames.size() == skipped) {
@@ -137,17 +293,16 @@ int cmd_replay(const ReplayOptions& o) {
     return kExitNoFrames;
   }
 
-  // A stream of another sensor kind decodes, but every frame would be
-  // refused as the wrong kind: an empty run, never a result.
-  const std::size_t of_filter_kind = static_cast<std::size_t>(
-      std::count_if(frames.begin(), frames.end(), [&](const MeasurementFrame& f) { return f.kind == filter.kind; }));
-  if (of_filter_kind == 0) {
-    throw std::runtime_error(source + ": its " + std::to_string(frames.size()) + " frames are " +
-                             frame_kind_name(frames.front().kind) + " frames; filter '" + std::string(filter.name) +
-                             "' takes " + frame_kind_name(filter.kind) +
-                             " frames (replay runs the radar filters of `kestrel-sim list`; PCL and sonar streams "
-                             "are not replayed yet)");
+  if (kind != hal::FrameKind::kRadar) {
+    return replay_other_kind(o, kind, std::move(bytes), frames.size() - skipped, source);
   }
+  if (!o.scenario.empty()) {
+    throw std::invalid_argument("--scenario " + o.scenario + ": " + source +
+                                " holds radar frames, which the radar filters replay without a scenario (--scenario "
+                                "chooses the sensor parameters of a PCL or sonar stream)");
+  }
+  check_filter_fits(o.filter, kind, source + ": its " + std::to_string(frames.size() - skipped) + " frames are radar frames");
+  const FilterEntry& filter = find_filter(o.filter.filter);
 
   FilterOptions options = o.filter.options;
   // Gated as a board by default; --ungated or a board_gate setting say otherwise.

@@ -1,16 +1,21 @@
 // SPDX-License-Identifier: Apache-2.0
-// `kestrel-sim run`: one scenario, one filter, N seeds.
+// `kestrel-sim run`: one scenario, one filter, N seeds. A PCL or sonar
+// scenario runs the Monte Carlo of `kestrel-sim pcl` / `uw` (the same code).
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
+#include "cli/cmd_pcl.hpp"
+#include "cli/cmd_uw.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
 #include "plots/plot_runner.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_json.hpp"
 #include "scenarios/registry.hpp"
+#include "scenarios/sensor_kind.hpp"
 #include "stream/stream_writer.hpp"
 
 namespace kestrel::sim::cli {
@@ -36,7 +41,56 @@ void print_files(const std::filesystem::path& dir, const std::string& filter, co
 }
 }  // namespace
 
+void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::string& what) {
+  const std::string kind_name = sensor_kind_name(kind);
+  const std::string fitting = kind_name + " frames: " + join_names(filters_for_kind(kind));
+  if (f.filter_given) {
+    const std::optional<hal::FrameKind> takes = filter_kind(f.filter);
+    if (!takes.has_value() && kind != hal::FrameKind::kRadar) {
+      throw std::invalid_argument(what + "; unknown filter '" + f.filter + "' (filters for " + fitting + ")");
+    }
+    // An unknown radar filter is left to find_filter, which lists them.
+    if (takes.has_value() && *takes != kind) {
+      throw std::invalid_argument(what + "; filter '" + f.filter + "' takes " + sensor_kind_name(*takes) +
+                                  " frames (filters for " + fitting + ")");
+    }
+  }
+  if (kind != hal::FrameKind::kRadar && !f.radar_only_given.empty()) {
+    throw std::invalid_argument(what + "; " + join_names(f.radar_only_given) +
+                                " set the radar filters and do not apply (the " + kind_name +
+                                " tracker's own options are on `kestrel-sim " +
+                                (kind == hal::FrameKind::kPcl ? "pcl" : "uw") + "`)");
+  }
+}
+
 int cmd_run(const RunOptions& o) {
+  const std::optional<hal::FrameKind> kind = scenario_kind(o.scenario);
+  if (kind.has_value() && *kind != hal::FrameKind::kRadar) {
+    check_filter_fits(o.filter, *kind,
+                      "scenario '" + o.scenario + "' is a " + sensor_kind_name(*kind) + " scenario");
+    // The subcommands' own Monte Carlo, files and printout, at run's options.
+    if (*kind == hal::FrameKind::kPcl) {
+      PclOptions p;
+      p.scenario = o.scenario;
+      p.runs = o.runs;
+      p.seed = o.seed;
+      p.jobs = o.jobs;
+      p.out = o.out;
+      p.plots = o.plots;
+      p.budget_us = o.filter.budget_us;
+      return cmd_pcl(p);
+    }
+    UwOptions u;
+    u.scenario = o.scenario;
+    u.runs = o.runs;
+    u.seed = o.seed;
+    u.jobs = o.jobs;
+    u.out = o.out;
+    u.plots = o.plots;
+    u.budget_us = o.filter.budget_us;
+    return cmd_uw(u);
+  }
+  if (kind.has_value()) check_filter_fits(o.filter, *kind, "scenario '" + o.scenario + "' is a radar scenario");
   const MonteCarloConfig config = config_from(o.filter, o.runs, o.seed, o.jobs);
   const auto made = make_scenario(o.scenario);
   // Single-target scoring (one truth, RMSE) does not apply to several targets.

@@ -3,6 +3,8 @@
 // (docs/tracking.md). Runs one job at a time so runs do not compete for the
 // cores; every step of every run enters the distribution.
 #include <cstdio>
+#include <optional>
+#include <stdexcept>
 
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
@@ -10,10 +12,16 @@
 #include "montecarlo/monte_carlo.hpp"
 #include "report/results_table.hpp"
 #include "scenarios/registry.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim::cli {
 
 int cmd_timing(const TimingOptions& o) {
+  const std::optional<hal::FrameKind> kind = scenario_kind(o.scenario);
+  if (kind.has_value() && *kind != hal::FrameKind::kRadar) {
+    throw std::invalid_argument("timing runs radar scenarios; '" + o.scenario + "' is a " + sensor_kind_name(*kind) +
+                                " scenario, whose step times `kestrel-sim run -s " + o.scenario + "` prints");
+  }
   const auto scenario = make_scenario(o.scenario);
   const FilterEntry& filter = find_filter(o.filter.filter);
   MonteCarloConfig config;

@@ -24,7 +24,16 @@ struct FilterChoice {
   /// board_gate came from --set or --config (replay's default then yields).
   bool board_gate_set = false;
   double budget_us = 1000.0;       ///< Step overrun threshold, us.
+  bool filter_given = false;       ///< -f was on the command line (not the default).
+  /// Options given that only the radar filters take (--qj, --set, ...):
+  /// for a PCL or sonar run they are an error, never ignored.
+  std::vector<std::string> radar_only_given;
 };
+
+/// Throws std::invalid_argument naming the filters of `kind` when -f names
+/// one of another kind (`what` says whose kind: "scenario 'pcl002'", a
+/// stream file), and naming `radar_only_given` when `kind` is not radar.
+void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::string& what);
 
 /// Folds --config and then `sets` into f.options, under the options that
 /// have their own flag (--qj, --gate-d2, --board-gate, --robust-gate, --imm):
@@ -109,6 +118,9 @@ struct ReplayOptions {
   double loss_threshold_m = 300.0;
   std::size_t first_scored_step = 2;
   std::string out = "results/replay";
+  /// --scenario: whose sensor parameters a PCL or sonar stream is run with
+  /// (default pcl002 / uw003); a radar stream takes none.
+  std::string scenario;
   bool plots = true;
   /// Score as the papers score filters: confirmed tracks ungated. The
   /// default gates them as a board does (FilterOptions::board_gate).

@@ -5,7 +5,9 @@
 // command line; each subcommand lives in its own cmd_*.cpp.
 #include <cstdio>
 #include <exception>
+#include <initializer_list>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -57,6 +59,16 @@ void add_cat062_output(CLI::App* cmd, Cat062Output& o) {
   cmd->add_option("--sic", o.sic, "I062/010 SIC of --asterix-out")->check(CLI::Range(0, 255))->capture_default_str();
 }
 
+// Which of `names` the user gave on `cmd` (CLI11 throws for a name it does
+// not know, so a misspelt one here fails every time, not silently).
+std::vector<std::string> given_options(const CLI::App* cmd, std::initializer_list<const char*> names) {
+  std::vector<std::string> out;
+  for (const char* n : names) {
+    if (cmd->count(n) > 0) out.emplace_back(n);
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -81,7 +93,9 @@ int main(int argc, char** argv) {
 
   RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo runs of one scenario with one filter");
-  run_cmd->add_option("--scenario,-s", run.scenario, "Scenario (see `list`)")->required();
+  run_cmd->add_option("--scenario,-s", run.scenario,
+                      "Scenario (see `list`): radar, or PCL/sonar (the Monte Carlo of `pcl` / `uw`)")
+      ->required();
   add_filter_options(run_cmd, run.filter);
   run_cmd->add_option("--runs,-n", run.runs, "Monte Carlo runs")->capture_default_str();
   run_cmd->add_option("--seed", run.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
@@ -121,7 +135,8 @@ int main(int argc, char** argv) {
   sweep_cmd->add_flag("--plots", sweep.plots, "Draw each value's figures");
 
   ReplayOptions replay;
-  CLI::App* replay_cmd = app.add_subcommand("replay", "Run a filter over a recorded stream file or plot CSV");
+  CLI::App* replay_cmd = app.add_subcommand(
+      "replay", "Run a tracker over a recorded stream file (radar, PCL or sonar), plot CSV or CAT048 recording");
   auto* stream_opt = replay_cmd->add_option("--stream", replay.stream, "Wire stream file");
   auto* csv_opt = replay_cmd->add_option("--csv", replay.csv, "Radar plot CSV (time_s,range_m,bearing_rad,...)");
   auto* asterix_opt =
@@ -130,6 +145,9 @@ int main(int argc, char** argv) {
   csv_opt->excludes(stream_opt);
   asterix_opt->excludes(stream_opt)->excludes(csv_opt);
   replay_cmd->add_option("--truth", replay.truth, "Truth CSV (time_s,x_m,y_m,...): score the run");
+  replay_cmd->add_option("--scenario,-s", replay.scenario,
+                         "PCL or sonar stream: the scenario whose sensor parameters the tracker takes "
+                         "(default pcl002 / uw003)");
   add_filter_options(replay_cmd, replay.filter);
   replay_cmd->add_option("--loss-threshold-m", replay.loss_threshold_m, "L of the track-loss metric, m")
       ->capture_default_str();
@@ -184,6 +202,16 @@ int main(int argc, char** argv) {
     }
   }
   CLI11_PARSE(app, argc, argv);
+
+  // What a PCL or sonar run must refuse rather than ignore (check_filter_fits).
+  run.filter.filter_given = run_cmd->count("--filter") > 0;
+  run.filter.radar_only_given =
+      given_options(run_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--config",
+                              "--set", "--asterix-out", "--sac", "--sic"});
+  replay.filter.filter_given = replay_cmd->count("--filter") > 0;
+  replay.filter.radar_only_given = given_options(
+      replay_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--config", "--set",
+                   "--asterix-out", "--sac", "--sic", "--ungated", "--loss-threshold-m", "--first-scored-step"});
 
   try {
     // --scalar picks the filter's build on that scalar (cli/cmd_scalars.hpp).

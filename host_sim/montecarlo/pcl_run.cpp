@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "montecarlo/pcl_run.hpp"
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <map>
@@ -73,9 +74,17 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const std::vector<PclFr
   // Every poll that does not return kNoData consumes at least one byte.
   const std::size_t max_polls = stream.size() + 1;
   const TargetIndexByContent target_index_of(reference);
+  // Room for every track in every frame: a replay has no reference frames
+  // to count, so count the stream's frames (a sink too small drops reports).
+  std::size_t frames_in_stream = 0;
+  {
+    host::StreamFileFeed counter(stream);
+    hal::Frame scratch{};
+    while (counter.poll(scratch) != Status::kNoData && frames_in_stream < max_polls) ++frames_in_stream;
+  }
   host::StreamFileFeed feed(std::move(stream));
   host::SteadyClock clock;
-  Sink sink(reference.size() * kTracks);
+  Sink sink(std::max(reference.size(), frames_in_stream) * kTracks);
   hal::PclAdapterConfig adapter_config;
   adapter_config.carrier_hz = params.carrier_hz;
   const Adapter adapter(tracker.get(), adapter_config);
@@ -94,6 +103,7 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const std::vector<PclFr
     f.stepped = runner->stats().steps != steps_before;
     f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
     const double t_s = f.stepped ? static_cast<double>(runner->last_frame().t_us) * 1e-6 : previous_t_s;
+    f.t_s = f.stepped ? t_s : nan;
     // Scan entry -> wire index: the adapter keeps candidates in frame order,
     // so walk both lists (exact compare: the same conversion, bit for bit).
     std::vector<int> wire_index;

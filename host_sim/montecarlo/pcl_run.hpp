@@ -41,6 +41,7 @@ struct PclFrameOutcome {
   Status status = Status::kOk;   ///< Runner::poll_once() result.
   bool stepped = false;          ///< Reached Tracker::step.
   std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
+  double t_s = 0.0;              ///< The frame's wire time, s (NaN if it did not reach the tracker).
   std::size_t scan_count = 0;    ///< Candidates the tracker saw.
   int target_index = -1;         ///< The target's detection in the wire frame, -1 if none or unknown.
   bool target_in_scan = false;   ///< The target's detection survived the adapter's cut.

@@ -79,6 +79,7 @@ UwRunOutput run_uw_stream(std::vector<std::uint8_t> stream, const UnderwaterTrac
     if (f.status == Status::kNoData) break;
     f.stepped = runner->stats().steps != steps_before;
     f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
+    f.t_s = f.stepped ? static_cast<double>(runner->last_frame().t_us) * 1e-6 : std::nan("");
     if (f.stepped) {
       const UnderwaterStepStats& st = tracker->last_step();
       f.initialised = st.initialised;

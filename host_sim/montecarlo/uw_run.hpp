@@ -26,6 +26,7 @@ struct UwFrameOutcome {
   Status status = Status::kOk;   ///< Runner::poll_once() result.
   bool stepped = false;          ///< Reached UnderwaterTracker::step.
   std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
+  double t_s = 0.0;              ///< The frame's wire time, s (NaN if it did not reach the tracker).
   bool reported = false;         ///< The tracker published an estimate.
   std::uint32_t track_id = 0;    ///< Its track id (a new one at every (re)initialisation).
   bool initialised = false;      ///< This frame (re)started the track from a fix.

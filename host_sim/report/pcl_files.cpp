@@ -103,59 +103,76 @@ void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfi
       }
     }
   }
-  {
-    std::ofstream f = open_out(dir / "pcl_tracks.csv");
-    f << "time_s,track_id,associated,frame_index,rb_m,drb_mps,fd_hz,p_rr,p_rd,p_dd,nis,test_ratio,age,hits,misses,"
-         "pred_rb_m,pred_drb_mps,pred_fd_hz,on_target\n";
-    for (std::size_t k = 0; k < n; ++k) {
-      const PclTruth& t = run.truth[k];
-      for (const PclTrackRow& r : out.frames[k].tracks) {
-        const bool on = std::abs(r.rb_m - t.rb_m) <= tol.rb_m && std::abs(r.drb_mps - t.drb_mps) <= tol.drb_mps;
-        const double nan = std::nan("");
-        f << t.t_s << ',' << r.id << ',' << (r.associated ? 1 : 0) << ',' << r.frame_index << ',' << r.rb_m << ','
-          << r.drb_mps << ',' << doppler_from_range_rate(r.drb_mps, lambda) << ',' << r.p_rr << ',' << r.p_rd << ','
-          << r.p_dd << ',' << cell(r.nis) << ',' << r.test_ratio << ',' << r.age << ',' << r.hits << ',' << r.misses
-          << ',' << cell(r.has_prediction ? r.pred_rb_m : nan) << ','
-          << cell(r.has_prediction ? r.pred_drb_mps : nan) << ','
-          << cell(r.has_prediction ? doppler_from_range_rate(r.pred_drb_mps, lambda) : nan) << ',' << (on ? 1 : 0)
-          << '\n';
+  std::vector<double> time_s;
+  for (const PclTruth& t : run.truth) time_s.push_back(t.t_s);
+  write_pcl_tracks_csv(dir / "pcl_tracks.csv", out.frames, time_s, lambda, &run.truth, tol);
+}
+
+void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<PclFrameOutcome>& frames,
+                          const std::vector<double>& time_s, double lambda_m, const std::vector<PclTruth>* truth,
+                          const PclTolerance& tol) {
+  std::ofstream f = open_out(path);
+  f << "time_s,track_id,associated,frame_index,rb_m,drb_mps,fd_hz,p_rr,p_rd,p_dd,nis,test_ratio,age,hits,misses,"
+       "pred_rb_m,pred_drb_mps,pred_fd_hz,on_target\n";
+  const std::size_t n = std::min(frames.size(), time_s.size());
+  const double nan = std::nan("");
+  for (std::size_t k = 0; k < n; ++k) {
+    for (const PclTrackRow& r : frames[k].tracks) {
+      // Without truth there is nothing to be on: the cell stays empty.
+      std::string on;
+      if (truth != nullptr && k < truth->size()) {
+        const PclTruth& t = (*truth)[k];
+        on = std::abs(r.rb_m - t.rb_m) <= tol.rb_m && std::abs(r.drb_mps - t.drb_mps) <= tol.drb_mps ? "1" : "0";
       }
+      f << time_s[k] << ',' << r.id << ',' << (r.associated ? 1 : 0) << ',' << r.frame_index << ',' << r.rb_m << ','
+        << r.drb_mps << ',' << doppler_from_range_rate(r.drb_mps, lambda_m) << ',' << r.p_rr << ',' << r.p_rd << ','
+        << r.p_dd << ',' << cell(r.nis) << ',' << r.test_ratio << ',' << r.age << ',' << r.hits << ',' << r.misses
+        << ',' << cell(r.has_prediction ? r.pred_rb_m : nan) << ','
+        << cell(r.has_prediction ? r.pred_drb_mps : nan) << ','
+        << cell(r.has_prediction ? doppler_from_range_rate(r.pred_drb_mps, lambda_m) : nan) << ',' << on << '\n';
     }
   }
+  if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
+}
+
+nlohmann::json pcl_scenario_json(const PclScenarioConfig& sc) {
+  return {{"name", sc.name},
+          {"frames", sc.frames},
+          {"frame_period_s", sc.frame_period_s},
+          {"carrier_hz", sc.carrier_hz},
+          {"pd", sc.pd},
+          {"sigma_rb_m", sc.sigma_rb_m},
+          {"sigma_fd_hz", sc.sigma_fd_hz},
+          {"clutter_mean", sc.clutter_mean},
+          {"ridge_max", sc.ridge_max},
+          {"scan_capacity", sc.scan_capacity},
+          {"track_capacity", pcl_track_capacity(sc.scan_capacity)}};
+}
+
+nlohmann::json pcl_tracker_json(const PclTrackerParams& p, const TrackerPolicies& policies) {
+  return {{"accel_sigma_mps2", p.accel_sigma_mps2},
+          {"gate_confirmed", gate_name(p.gate_confirmed)},
+          {"gate_tentative", gate_name(p.gate_tentative)},
+          {"confirm_m", p.confirm_m},
+          {"confirm_n", p.confirm_n},
+          {"min_start_doppler_hz", p.min_start_doppler_hz},
+          {"max_coast_misses", p.max_coast_misses},
+          {"max_rb_variance_m2", p.max_rb_variance_m2},
+          {"associator", policy_name(kAssociatorNames, policies.associator)},
+          {"manager", policy_name(kManagerNames, policies.manager)},
+          {"detection_probability", p.detection_probability},
+          {"clutter_density", p.clutter_density},
+          {"new_target_density", p.new_target_density},
+          {"false_track_probability", p.false_track_probability},
+          {"missed_track_probability", p.missed_track_probability}};
 }
 
 nlohmann::json pcl_summary_json(const PclScenarioConfig& sc, const PclTrackerParams& p, const PclMonteCarloConfig& c,
                                 const PclSummary& s) {
   return {
       {"schema", "kestrel-sim-pcl-summary/1"},
-      {"scenario",
-       {{"name", sc.name},
-        {"frames", sc.frames},
-        {"frame_period_s", sc.frame_period_s},
-        {"carrier_hz", sc.carrier_hz},
-        {"pd", sc.pd},
-        {"sigma_rb_m", sc.sigma_rb_m},
-        {"sigma_fd_hz", sc.sigma_fd_hz},
-        {"clutter_mean", sc.clutter_mean},
-        {"ridge_max", sc.ridge_max},
-        {"scan_capacity", sc.scan_capacity},
-        {"track_capacity", pcl_track_capacity(sc.scan_capacity)}}},
-      {"tracker",
-       {{"accel_sigma_mps2", p.accel_sigma_mps2},
-        {"gate_confirmed", gate_name(p.gate_confirmed)},
-        {"gate_tentative", gate_name(p.gate_tentative)},
-        {"confirm_m", p.confirm_m},
-        {"confirm_n", p.confirm_n},
-        {"min_start_doppler_hz", p.min_start_doppler_hz},
-        {"max_coast_misses", p.max_coast_misses},
-        {"max_rb_variance_m2", p.max_rb_variance_m2},
-        {"associator", policy_name(kAssociatorNames, c.policies.associator)},
-        {"manager", policy_name(kManagerNames, c.policies.manager)},
-        {"detection_probability", p.detection_probability},
-        {"clutter_density", p.clutter_density},
-        {"new_target_density", p.new_target_density},
-        {"false_track_probability", p.false_track_probability},
-        {"missed_track_probability", p.missed_track_probability}}},
+      {"scenario", pcl_scenario_json(sc)},
+      {"tracker", pcl_tracker_json(p, c.policies)},
       {"runs", s.runs},
       {"base_seed", c.base_seed},
       {"tolerance", {{"rb_m", c.tolerance.rb_m}, {"drb_mps", c.tolerance.drb_mps}}},

@@ -29,6 +29,18 @@ void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<Pcl
 void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfig& scenario,
                         const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tolerance);
 
+/// pcl_tracks.csv alone: every confirmed track of every frame (`pcl` for
+/// run 0, `replay --stream` for a recorded PCL stream). time_s[k] is frame
+/// k's time; with `truth` (frame k's truth at index k), on_target is 0/1,
+/// without it the cell is empty.
+void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<PclFrameOutcome>& frames,
+                          const std::vector<double>& time_s, double lambda_m, const std::vector<PclTruth>* truth,
+                          const PclTolerance& tolerance);
+
+/// The "scenario" (sensor) and "tracker" objects of pcl_summary.json.
+nlohmann::json pcl_scenario_json(const PclScenarioConfig& scenario);
+nlohmann::json pcl_tracker_json(const PclTrackerParams& params, const TrackerPolicies& policies);
+
 nlohmann::json pcl_summary_json(const PclScenarioConfig& scenario, const PclTrackerParams& params,
                                 const PclMonteCarloConfig& config, const PclSummary& summary);
 

@@ -97,24 +97,31 @@ void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& ru
       }
     }
   }
-  {
-    std::ofstream f = open_out(dir / "uw_track.csv");
-    f << "frame,time_s,status,reported,initialised,predict_only,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"
-         "sd_x_m,sd_y_m,sd_z_m,sd_vx_mps,sd_vy_mps,sd_vz_mps,sd_c_mps,fused,gated,nis,step_ns\n";
-    for (std::size_t k = 0; k < n; ++k) {
-      const UwFrameOutcome& o = out.frames[k];
-      f << k << ',' << cell(run.truth[k].t_s) << ',' << to_string(o.status) << ',' << (o.reported ? 1 : 0) << ','
-        << (o.initialised ? 1 : 0) << ',' << (o.predict_only ? 1 : 0);
-      for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.x[i]) : "");
-      for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.sd[i]) : "");
-      int fused = 0, gated = 0;
-      for (int b = 0; b < 32; ++b) {
-        fused += static_cast<int>((o.fused >> b) & 1u);
-        gated += static_cast<int>((o.gated >> b) & 1u);
-      }
-      f << ',' << fused << ',' << gated << ',' << (o.reported ? cell(o.nis) : "") << ',' << o.step_ns << '\n';
+  std::vector<double> time_s;
+  for (std::size_t k = 0; k < n; ++k) time_s.push_back(run.truth[k].t_s);
+  write_uw_track_csv(dir / "uw_track.csv", out.frames, time_s);
+}
+
+void write_uw_track_csv(const std::filesystem::path& path, const std::vector<UwFrameOutcome>& frames,
+                        const std::vector<double>& time_s) {
+  const std::size_t n = std::min(frames.size(), time_s.size());
+  std::ofstream f = open_out(path);
+  f << "frame,time_s,status,reported,initialised,predict_only,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"
+       "sd_x_m,sd_y_m,sd_z_m,sd_vx_mps,sd_vy_mps,sd_vz_mps,sd_c_mps,fused,gated,nis,step_ns\n";
+  for (std::size_t k = 0; k < n; ++k) {
+    const UwFrameOutcome& o = frames[k];
+    f << k << ',' << cell(time_s[k]) << ',' << to_string(o.status) << ',' << (o.reported ? 1 : 0) << ','
+      << (o.initialised ? 1 : 0) << ',' << (o.predict_only ? 1 : 0);
+    for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.x[i]) : "");
+    for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.sd[i]) : "");
+    int fused = 0, gated = 0;
+    for (int b = 0; b < 32; ++b) {
+      fused += static_cast<int>((o.fused >> b) & 1u);
+      gated += static_cast<int>((o.gated >> b) & 1u);
     }
+    f << ',' << fused << ',' << gated << ',' << (o.reported ? cell(o.nis) : "") << ',' << o.step_ns << '\n';
   }
+  if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
 nlohmann::json uw_params_json(const UnderwaterTrackerParams& p) {
@@ -140,24 +147,28 @@ nlohmann::json uw_params_json(const UnderwaterTrackerParams& p) {
           {"project_depth", p.project_depth}};
 }
 
-nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrackerParams& params,
-                               const UwMonteCarloConfig& config, const UwSummary& s) {
+nlohmann::json uw_scenario_json(const UwScenarioConfig& sc) {
   nlohmann::json beacons = nlohmann::json::array();
   for (const auto& b : sc.beacons_m) beacons.push_back({b[0], b[1], b[2]});
+  return {{"name", sc.name},
+          {"description", sc.description},
+          {"frames", sc.frames},
+          {"period_s", sc.period_s},
+          {"beacons_m", beacons},
+          {"seabed_depth_m", sc.seabed_depth_m},
+          {"sigma_toa_s", sc.sigma_toa_s},
+          {"reflected", sc.reflected},
+          {"outlier_probability", sc.outlier_probability},
+          {"sound_speed_step_mps", sc.sound_speed_step_mps},
+          {"sound_speed_limit_mps", sc.sound_speed_limit_mps},
+          {"accel_sigma_mps2", sc.accel_sigma_mps2}};
+}
+
+nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrackerParams& params,
+                               const UwMonteCarloConfig& config, const UwSummary& s) {
   nlohmann::json j;
   j["schema"] = "kestrel-sim-uw-summary/1";
-  j["scenario"] = {{"name", sc.name},
-                   {"description", sc.description},
-                   {"frames", sc.frames},
-                   {"period_s", sc.period_s},
-                   {"beacons_m", beacons},
-                   {"seabed_depth_m", sc.seabed_depth_m},
-                   {"sigma_toa_s", sc.sigma_toa_s},
-                   {"reflected", sc.reflected},
-                   {"outlier_probability", sc.outlier_probability},
-                   {"sound_speed_step_mps", sc.sound_speed_step_mps},
-                   {"sound_speed_limit_mps", sc.sound_speed_limit_mps},
-                   {"accel_sigma_mps2", sc.accel_sigma_mps2}};
+  j["scenario"] = uw_scenario_json(sc);
   j["tracker"] = uw_params_json(params);
   j["runs"] = s.runs;
   j["seeds"] = {config.base_seed, config.base_seed + config.runs - 1};

@@ -31,6 +31,13 @@ void write_uw_steps_csv(const std::filesystem::path& path, const UwSummary& summ
 /// uw_truth.csv, uw_arrivals.csv and uw_track.csv of one run.
 void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& run, const UwRunOutput& out);
 
+/// uw_track.csv alone: one row per frame (`uw` for run 0, `replay --stream`
+/// for a recorded sonar stream); time_s[k] is frame k's time (NaN: empty).
+void write_uw_track_csv(const std::filesystem::path& path, const std::vector<UwFrameOutcome>& frames,
+                        const std::vector<double>& time_s);
+
+/// The "scenario" object of uw_summary.json (the installation and noise).
+nlohmann::json uw_scenario_json(const UwScenarioConfig& scenario);
 nlohmann::json uw_params_json(const UnderwaterTrackerParams& params);
 nlohmann::json uw_summary_json(const UwScenarioConfig& scenario, const UnderwaterTrackerParams& params,
                                const UwMonteCarloConfig& config, const UwSummary& summary);

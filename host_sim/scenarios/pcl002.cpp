@@ -149,6 +149,8 @@ PclScenarioConfig pcl002_hard_config() {
   return c;
 }
 
+std::vector<std::string> pcl_scenario_names() { return {"pcl002", "pcl002-hard"}; }
+
 PclScenarioConfig pcl_config_by_name(const std::string& name) {
   std::string key(name);
   for (char& ch : key) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));

@@ -61,6 +61,8 @@ PclScenarioConfig pcl002_config();
 PclScenarioConfig pcl002_hard_config();
 /// By name ("pcl002", "pcl002-hard", case-insensitive). Throws std::invalid_argument.
 PclScenarioConfig pcl_config_by_name(const std::string& name);
+/// The names pcl_config_by_name knows, in listing order.
+std::vector<std::string> pcl_scenario_names();
 
 /// The drone at one frame time, and what the sensor would measure noise-free.
 struct PclTruth {

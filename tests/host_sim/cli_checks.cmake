@@ -4,23 +4,126 @@
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 
-if(CHECK STREQUAL "replay_wrong_kind")
-  # A PCL stream replayed with a radar filter: an error naming both kinds
-  # and a non-zero exit, not an empty run with exit 0.
-  execute_process(COMMAND ${SIM} generate --scenario pcl002 --seed 3 --out ${OUT}/pcl.kstr RESULT_VARIABLE rc)
+# Generate one stream of a PCL or sonar scenario into ${OUT}/NAME.kstr.
+function(generate_stream scenario name)
+  execute_process(COMMAND ${SIM} generate --scenario ${scenario} --seed 3 --out ${OUT}/${name}.kstr
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "generate --scenario pcl002 failed (${rc})")
+    message(FATAL_ERROR "generate --scenario ${scenario} failed (${rc}):\n${out}${err}")
   endif()
-  execute_process(COMMAND ${SIM} replay --stream ${OUT}/pcl.kstr --no-plots --out ${OUT}/replay
+endfunction()
+
+# Run `replay ARGN`, which must fail naming `pattern` on stderr and write no
+# summary into ${OUT}/${dir}.
+function(expect_replay_error dir pattern)
+  execute_process(COMMAND ${SIM} replay ${ARGN} --no-plots --out ${OUT}/${dir}
                   RESULT_VARIABLE rc ERROR_VARIABLE err OUTPUT_VARIABLE out)
   if(rc EQUAL 0)
-    message(FATAL_ERROR "replay of a PCL stream with ekf-ca exited 0:\n${out}${err}")
+    message(FATAL_ERROR "replay ${ARGN} exited 0:\n${out}${err}")
   endif()
-  if(NOT err MATCHES "frames are PCL frames; filter 'ekf-ca' takes radar frames")
-    message(FATAL_ERROR "replay of a PCL stream did not name the kinds:\n${err}")
+  if(NOT err MATCHES "${pattern}")
+    message(FATAL_ERROR "replay ${ARGN} did not say '${pattern}':\n${out}${err}")
   endif()
-  if(EXISTS ${OUT}/replay/ekf-ca_tracks.csv)
-    message(FATAL_ERROR "replay of a PCL stream wrote a track CSV")
+  if(EXISTS ${OUT}/${dir}/summary.json)
+    message(FATAL_ERROR "replay ${ARGN} wrote a summary")
+  endif()
+endfunction()
+
+if(CHECK STREQUAL "replay_wrong_kind")
+  # A PCL stream replayed with a radar filter (-f), a sonar scenario's
+  # sensor, radar-only options or --truth: an error naming what does not fit
+  # and a non-zero exit, not an empty or half run with exit 0.
+  generate_stream(pcl002 pcl)
+  expect_replay_error(r1 "frames are PCL frames; filter 'ekf-ca' takes radar frames \\(filters for PCL frames: pcl-kf\\)"
+                      --stream ${OUT}/pcl.kstr -f ekf-ca)
+  if(EXISTS ${OUT}/r1/ekf-ca_tracks.csv OR EXISTS ${OUT}/r1/pcl_tracks.csv)
+    message(FATAL_ERROR "replay of a PCL stream with ekf-ca wrote a track CSV")
+  endif()
+  expect_replay_error(r2 "--scenario 'uw003' is a sonar scenario; .*pcl.kstr holds PCL frames"
+                      --stream ${OUT}/pcl.kstr --scenario uw003)
+  expect_replay_error(r3 "--qj, --set set the radar filters and do not apply"
+                      --stream ${OUT}/pcl.kstr --qj 5 --set confirm_m=3)
+  expect_replay_error(r4 "--truth: scoring a replay of PCL frames is not implemented"
+                      --stream ${OUT}/pcl.kstr --truth ${OUT}/none.csv)
+  # A radar stream with the PCL tracker, and with a PCL scenario.
+  execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
+  expect_replay_error(r5 "frames are radar frames; filter 'pcl-kf' takes PCL frames" --stream ${OUT}/s1.kstr -f pcl-kf)
+  expect_replay_error(r6 "--scenario pcl002: .*s1.kstr holds radar frames" --stream ${OUT}/s1.kstr -s pcl002)
+elseif(CHECK STREQUAL "replay_mixed_kinds")
+  # A stream holding PCL and sonar frames is refused, naming the counts.
+  generate_stream(pcl002 pcl)
+  generate_stream(uw003 uw)
+  execute_process(COMMAND cat ${OUT}/pcl.kstr ${OUT}/uw.kstr OUTPUT_FILE ${OUT}/mixed.kstr RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "cat failed (${rc})")
+  endif()
+  expect_replay_error(r "mixed.kstr: mixes sensor kinds: 120 PCL, [0-9]+ sonar frames" --stream ${OUT}/mixed.kstr)
+elseif(CHECK STREQUAL "replay_pcl_stream" OR CHECK STREQUAL "replay_sonar_stream")
+  # A generated PCL (sonar) stream replayed through its own tracker: exit 0,
+  # the tracks CSV of `pcl` (`uw`) with rows that show a track was held,
+  # every frame ok (or over the scan capacity, which PCL clutter reaches:
+  # the frame is tracked, its excess candidates cut), and the summary naming the kind and the sensor's scenario.
+  if(CHECK STREQUAL "replay_pcl_stream")
+    set(scenario pcl002-hard)
+    set(csv pcl_tracks.csv)
+    set(filter pcl-kf)
+    set(header "^time_s,track_id,associated,frame_index,rb_m,drb_mps,fd_hz,")
+    set(frames 120)
+  else()
+    set(scenario uw003-1ms)
+    set(csv uw_track.csv)
+    set(filter uw-ekf)
+    set(header "^frame,time_s,status,reported,initialised,predict_only,x_m,")
+    set(frames 50)
+  endif()
+  generate_stream(${scenario} s)
+  execute_process(COMMAND ${SIM} replay --stream ${OUT}/s.kstr --scenario ${scenario} --no-plots --out ${OUT}/replay
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "replay of a ${scenario} stream failed (${rc}):\n${out}${err}")
+  endif()
+  if(NOT out MATCHES "with the sensor parameters of ${scenario}\n" OR NOT out MATCHES "final status per frame: ok [0-9]+( too_many_candidates [0-9]+)?\n")
+    message(FATAL_ERROR "replay did not name ${scenario} or a frame was refused:\n${out}")
+  endif()
+  # Every frame of the stream (120 PCL, 50 sonar) reached the tracker.
+  if(NOT out MATCHES "frames ${frames}, steps ${frames};")
+    message(FATAL_ERROR "replay did not step every frame:\n${out}")
+  endif()
+  file(STRINGS ${OUT}/replay/${csv} lines)
+  list(GET lines 0 first)
+  if(NOT first MATCHES "${header}")
+    message(FATAL_ERROR "${csv} has another layout: ${first}")
+  endif()
+  if(CHECK STREQUAL "replay_pcl_stream")
+    # Rows are confirmed tracks: well over half the frames hold one.
+    list(LENGTH lines n)
+    if(n LESS 60)
+      message(FATAL_ERROR "${csv} has ${n} lines: the target was not tracked")
+    endif()
+    file(READ ${OUT}/replay/summary.json summary)
+    string(JSON rows GET "${summary}" results replay ${filter} confirmed_track_rows)
+    math(EXPR data_lines "${n} - 1")
+    if(NOT rows EQUAL data_lines)
+      message(FATAL_ERROR "summary.json counts ${rows} confirmed-track rows, ${csv} holds ${data_lines}")
+    endif()
+  else()
+    # One row per frame; most must hold an estimate (reported = 1).
+    set(reported 0)
+    foreach(line IN LISTS lines)
+      if(line MATCHES "^[0-9]+,[^,]*,ok,1,")
+        math(EXPR reported "${reported} + 1")
+      endif()
+    endforeach()
+    if(reported LESS 45)
+      message(FATAL_ERROR "${csv}: ${reported} frames with an estimate: the target was not tracked")
+    endif()
+  endif()
+  file(READ ${OUT}/replay/summary.json summary)
+  string(JSON kind GET "${summary}" results replay ${filter} kind)
+  string(JSON sensor GET "${summary}" results replay ${filter} sensor_scenario)
+  if(NOT sensor STREQUAL scenario OR (CHECK STREQUAL "replay_pcl_stream" AND NOT kind STREQUAL "PCL")
+     OR (CHECK STREQUAL "replay_sonar_stream" AND NOT kind STREQUAL "sonar"))
+    message(FATAL_ERROR "summary.json says kind ${kind}, sensor ${sensor}")
   endif()
 elseif(CHECK STREQUAL "suite_report")
   # The main job at tiny run counts: every part runs and report.md holds the
