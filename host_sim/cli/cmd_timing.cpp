@@ -3,6 +3,7 @@
 // (docs/tracking.md). Runs one job at a time so runs do not compete for the
 // cores; every step of every run enters the distribution.
 #include <cstdio>
+#include <stdexcept>
 
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
@@ -14,6 +15,8 @@
 namespace kestrel::sim::cli {
 
 int cmd_timing(const TimingOptions& o) {
+  if (!o.worst_case.empty()) return cmd_timing_worst_case(o.worst_case, o.runs);
+  if (o.scenario.empty()) throw std::invalid_argument("timing needs --scenario or --worst-case");
   const auto scenario = make_scenario(o.scenario);
   const FilterEntry& filter = find_filter(o.filter.filter);
   MonteCarloConfig config;
