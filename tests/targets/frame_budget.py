@@ -63,9 +63,18 @@ def measure(args, board):
             program = os.path.join(root, "kestrel-worst-frame")
     if program is None:
         sys.exit("FAIL: kestrel-worst-frame not found under %s/targets" % args.tree)
+    if not os.path.isfile(args.plugin):
+        sys.exit("FAIL: the counting plugin %s does not exist" % args.plugin)
     cmd = [emulator, "-d", "plugin", "-plugin", args.plugin + ",marker=kestrel_count_mark", program]
     proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     sys.stdout.write(proc.stdout)
+    # A QEMU built without plugin support refuses the option: skip. A plugin
+    # it cannot load (missing, or another plugin ABI) is a failure.
+    if ("kestrel-insn-count" not in proc.stderr and "plugin" in proc.stderr
+            and "Could not load plugin" not in proc.stderr):
+        sys.stderr.write(proc.stderr)
+        print("SKIP: %s cannot load the counting plugin (built without TCG plugins?)" % emulator)
+        sys.exit(SKIP)
     if proc.returncode != 0:
         sys.stderr.write(proc.stderr)
         sys.exit("FAIL: %s exited with status %d (1: a counted frame was not the worst case)"
