@@ -28,8 +28,7 @@ namespace kestrel::sim::cli {
 
 namespace {
 
-// As worst_frame.cpp counts them on the board.
-constexpr std::size_t kCounted = 3;
+constexpr std::size_t kCounted = board::kWorstCaseCountedFrames;
 
 template <class Scalar, std::size_t kTracks, std::size_t kPlots>
 int time_worst_case(const std::string& board, const char* scalar, std::size_t reps) {

@@ -5,8 +5,8 @@
 // (kestrel/board/worst_case_frame.hpp): kWorstCaseWarmFrames frames to
 // confirm a full table, then kWorstCaseCountedFrames full frames, each
 // converted by the board's adapter and stepped between calls of
-// kestrel_count_mark(), whose executions the QEMU plugin
-// (insn_count/qemu_insn_count.cpp) counts between. Built in the board's
+// kestrel_count_mark(); the QEMU plugin (insn_count/qemu_insn_count.cpp)
+// counts the instructions between those calls. Built in the board's
 // tree with its code generation (targets/common/worst_frame.cmake) and run
 // under qemu-arm or qemu-riscv64 Linux user mode. Prints, per counted frame,
 // what the step did, and exits 1 if it was not the worst-case path (every
@@ -29,7 +29,7 @@ using namespace KESTREL_WF_NS;
 using Scan = Tracker::Scan;
 constexpr std::size_t kTracks = Tracker::Table::kMaxTracks;
 constexpr std::size_t kPlots = Scan::kMaxMeasurements;
-constexpr std::size_t kCounted = 3;
+constexpr std::size_t kCounted = kestrel::board::kWorstCaseCountedFrames;
 
 // As the board's main.cpp builds it (targets/<board>/main.cpp). Called from
 // run(): without start files no static constructor runs.

@@ -19,7 +19,8 @@
 namespace kestrel::board {
 
 inline constexpr std::int64_t kWorstCasePeriodUs = 500'000;  ///< Frame interval, us (docs/scenarios.md's radar T).
-inline constexpr std::size_t kWorstCaseWarmFrames = 10;     ///< Frames stepped before the counted one.
+inline constexpr std::size_t kWorstCaseWarmFrames = 10;     ///< Frames stepped before the counted ones.
+inline constexpr std::size_t kWorstCaseCountedFrames = 3;   ///< Frames counted (and timed) after them.
 
 /// Frame k of the scene with `targets` targets and `plots` plots in all
 /// (targets first, then plots - targets clutter plots). plots <= hal::kMaxRadarPlots.
