@@ -17,6 +17,8 @@
 namespace kestrel::sim::cli {
 
 int cmd_timing(const TimingOptions& o) {
+  if (!o.worst_case.empty()) return cmd_timing_worst_case(o.worst_case, o.runs);
+  if (o.scenario.empty()) throw std::invalid_argument("timing needs --scenario or --worst-case");
   const std::optional<hal::FrameKind> kind = scenario_kind(o.scenario);
   if (kind.has_value() && *kind != hal::FrameKind::kRadar) {
     throw std::invalid_argument("timing runs radar scenarios; '" + o.scenario + "' is a " + sensor_kind_name(*kind) +

@@ -138,7 +138,11 @@ struct TimingOptions {
   FilterChoice filter;
   std::size_t runs = 20;
   std::uint64_t seed = 0;
+  std::string worst_case;  ///< --worst-case: a board's worst-case frame instead of a scenario.
 };
 int cmd_timing(const TimingOptions& o);
+/// The worst-case frame of `board` (cortex-m4f, cortex-m7, cortex-m0plus,
+/// riscv64-linux or host), adapter + step timed `reps` times per counted frame.
+int cmd_timing_worst_case(const std::string& board, std::size_t reps);
 
 }  // namespace kestrel::sim::cli

@@ -161,7 +161,10 @@ int main(int argc, char** argv) {
 
   TimingOptions timing;
   CLI::App* timing_cmd = app.add_subcommand("timing", "Per-step latency of the real-time loop");
-  timing_cmd->add_option("--scenario,-s", timing.scenario, "Scenario (see `list`)")->required();
+  timing_cmd->add_option("--scenario,-s", timing.scenario, "Scenario (see `list`)");
+  timing_cmd->add_option("--worst-case", timing.worst_case,
+                         "Instead of a scenario: the worst-case frame of a board (cortex-m4f, cortex-m7, "
+                         "cortex-m0plus, riscv64-linux, host), as its frame budget counts it; --runs: repetitions");
   add_filter_options(timing_cmd, timing.filter);
   timing_cmd->add_option("--runs,-n", timing.runs, "Runs")->capture_default_str();
   timing_cmd->add_option("--seed", timing.seed, "Seed of run 0")->capture_default_str();
