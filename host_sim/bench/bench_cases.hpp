@@ -77,10 +77,8 @@ inline constexpr bool kTrackerPaths<SrCdkf<M, H>> = false;
 /// Forms: "dense" is the generic filter on the same models with their
 /// structure hidden (Dense<M>: the test oracle and the baseline);
 /// "structured" lets the filter use what the models expose
-/// (kestrel/filters/structure.hpp). Q31.32 keeps the dense arithmetic its
-/// golden hashes were recorded with (Ekf::kBlockPredict and kSparseUpdate
-/// are off for fixed point), so its two forms run the same code; both rows
-/// are kept so that the table shows it.
+/// (kestrel/filters/structure.hpp); for Q31.32 that is the sparse form of
+/// the sequential whitened update (Ekf's header comment).
 template <class Visitor>
 void for_each_ekf_case(Visitor&& visit) {
   visit.template operator()<DenseEkfCa<double>>(CaseName{"ekf-ca", "double", "dense"});

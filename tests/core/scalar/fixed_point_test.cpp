@@ -109,6 +109,67 @@ TEMPLATE_TEST_CASE("Scenario: fixed-point + - * / are exact or correctly rounded
   }
 }
 
+SCENARIO("the 16-bit-limb 32 x 32-bit product (Thumb-1) equals the native one", "[fixed_point]") {
+  std::mt19937_64 g(20261204u);
+  GIVEN("random operands and the carry edges") {
+    int mismatches = 0;
+    auto check = [&](std::uint32_t a, std::uint32_t b) {
+      mismatches += kestrel::fixed::detail::mul_32x32_limbs(a, b) != std::uint64_t{a} * b ? 1 : 0;
+    };
+    for (int i = 0; i < kSamples; ++i) check(static_cast<std::uint32_t>(g()), static_cast<std::uint32_t>(g() >> 7));
+    for (const std::uint32_t a : {0u, 1u, 0xFFFFu, 0x10000u, 0xFFFF0000u, 0x8000FFFFu, 0xFFFFFFFFu}) {
+      for (const std::uint32_t b : {0u, 1u, 0xFFFFu, 0x10000u, 0xFFFF0000u, 0x8000FFFFu, 0xFFFFFFFFu}) check(a, b);
+    }
+    THEN("every product is exact") { CHECK(mismatches == 0); }
+  }
+}
+
+TEMPLATE_TEST_CASE("Scenario: a prepared divisor divides within 1.5 LSB", "[fixed_point]", kestrel::Q31_32,
+                   kestrel::Q23_40) {
+  using Q = TestType;
+  constexpr int F = Q::kFractionBits;
+  std::mt19937_64 g(20261203u + F);
+  GIVEN(kSamples << " random pairs, positive divisors of every magnitude") {
+    int far = 0;         // finite quotients more than 1.5 LSB from the rounded one
+    int wrong_sat = 0;   // saturation where the quotient fits, or none where it does not
+    int exact = 0;
+    int in_range = 0;
+    for (int i = 0; i < kSamples; ++i) {
+      const Q a = Q::from_raw(random_raw(g));
+      std::int64_t dr = random_raw(g);
+      if (dr < 0) dr = -dr;
+      if (dr == 0) dr = 1;
+      const Q d = Q::from_raw(dr);
+      const Q got = Q::divisor(d).divide(a);
+      const I128 want = ref_round_div(static_cast<I128>(a.raw()) << F, dr);
+      if (fits(want) && want < kMaxFinite / 2 && want > -kMaxFinite / 2) {
+        ++in_range;
+        const I128 err = static_cast<I128>(got.raw()) - want;
+        // |err| <= 1 in integers: 0.5 LSB of the rounded reference plus
+        // 1.5 LSB of the prepared reciprocal, both in whole LSBs.
+        far += (err > 1 || err < -1 || !got.is_finite()) ? 1 : 0;
+        exact += err == 0 ? 1 : 0;
+      } else if (!fits(want)) {
+        wrong_sat += got.is_finite() ? 1 : 0;
+      }
+    }
+    THEN("every quotient is within one LSB of the correctly rounded one, mostly equal to it") {
+      CHECK(in_range > kSamples / 4);
+      CHECK(far == 0);
+      CHECK(wrong_sat == 0);
+      CHECK(exact > in_range * 9 / 10);
+    }
+  }
+  GIVEN("a divisor that is not positive and finite") {
+    THEN("every quotient saturates") {
+      kestrel::reset_fixed_point_overflow_count();
+      CHECK_FALSE(Q::divisor(Q(0)).divide(Q(1)).is_finite());
+      CHECK_FALSE(Q::divisor(Q(-2)).divide(Q(1)).is_finite());
+      CHECK_FALSE(Q::divisor(Q::from_raw(INT64_MAX)).divide(Q(1)).is_finite());
+    }
+  }
+}
+
 TEMPLATE_TEST_CASE("Scenario: conversions into fixed point", "[fixed_point]", kestrel::Q31_32, kestrel::Q23_40) {
   using Q = TestType;
   constexpr int F = Q::kFractionBits;

@@ -30,16 +30,25 @@
 // same value from an LDL^T of the whitened S (divisors >= 1 again).
 //
 // Model structure (kestrel/filters/structure.hpp; docs/performance.md) is used when the
-// models expose it, detected at compile time: a block-diagonal motion model
-// gets F P F^T and Q per axis block; a measurement model with few non-zero
-// Jacobian columns gets P H^T and H P H^T from those columns, one
-// linearisation (h(x), the Jacobian columns, H P H^T) shared by every
-// innovation() and the update until x or P changes, and the update through
-// the Cholesky factor of S = L L^T: U = P H^T L^-T, w = L^-1 nu,
-// x+ = x + U w, P+ = P - U U^T on the upper triangle, mirrored, NIS = |w|^2
-// (neither S^-1 nor K is formed). Without the structure (or with Dense<M>
-// models) the dense products below run, Joseph form included: the baseline
-// and the test oracle, equal to the structured path to 1e-9 relative.
+// models expose it, detected at compile time, in every scalar: a
+// block-diagonal motion model gets F P F^T and Q per axis block; a
+// measurement model with few non-zero Jacobian columns gets P H^T and
+// H P H^T from those columns, one linearisation (h(x), the Jacobian
+// columns, H P H^T) shared by every innovation() and the update until x or
+// P changes, and the update through the Cholesky factor of S = L L^T:
+// U = P H^T L^-T, w = L^-1 nu, x+ = x + U w, P+ = P - U U^T on the upper
+// triangle, mirrored, NIS = |w|^2 (neither S^-1 nor K is formed). The
+// sequential whitened form takes the same route on the whitened channels:
+// folding channel j in divides by s_j = Ls(j, j)^2 with S_w = Hw P Hw^T + I
+// = Ls Ls^T, and its gain column is column j of U = P Hw^T Ls^-T, so the
+// channels together are x + U w, P - U U^T with w = Ls^-1 Lr^-1 nu
+// (R = Lr Lr^T factored once per model). Both factors carry the
+// reciprocals of their diagonals, so a plot's distance and the update
+// multiply instead of divide: a fixed-point division is a 64-step loop,
+// and the whitened diagonal is >= 1. Without the structure (or with
+// Dense<M> models) the dense products below run, Joseph form included: the
+// baseline and the test oracle, equal to the structured path to 1e-9
+// relative in double.
 //
 // Why P - U U^T and not the Joseph form on the structured path: the
 // Joseph form's protection is the product (I - K H) P (I - K H)^T, positive
@@ -100,13 +109,11 @@ class Ekf {
   using Jacobian = Mat<Scalar, kMeasDim, kStateDim>;
   static constexpr EkfUpdateForm kUpdateForm = kForm;
   static constexpr ChannelMask kAllChannels = all_channels(kMeasDim);
-  /// Model structure in use (structure.hpp). Floating-point scalars only:
-  /// the fixed-point path keeps the dense arithmetic its golden hashes were
-  /// recorded with until they are re-recorded deliberately.
-  static constexpr bool kBlockPredict =
-      BlockDiagonalMotion<Motion> && !ScalarTraits<typename Motion::Scalar>::kIsFixedPoint;
-  static constexpr bool kSparseUpdate =
-      SparseJacobianMeasurement<Measurement> && !ScalarTraits<typename Motion::Scalar>::kIsFixedPoint;
+  /// Model structure in use (structure.hpp), in every scalar.
+  static constexpr bool kBlockPredict = BlockDiagonalMotion<Motion>;
+  static constexpr bool kSparseUpdate = SparseJacobianMeasurement<Measurement>;
+  /// The sparse path of the sequential whitened form (header comment).
+  static constexpr bool kWhitenedSparse = kSparseUpdate && kForm == EkfUpdateForm::kSequentialWhitened;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
 
@@ -176,7 +183,7 @@ class Ekf {
   /// batch path S and its factor come from the shared linearisation, so
   /// each further plot costs its residual and one forward substitution.
   Innov innovation(const MeasVec& z) const {
-    if constexpr (kSparseUpdate && kForm == EkfUpdateForm::kBatch) {
+    if constexpr (kSparseUpdate) {
       Innov out{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOk};
       if (!all_finite(z)) {
         out.status = Status::kNonFinite;
@@ -190,7 +197,7 @@ class Ekf {
       } else if (lin.factor_status != Status::kOk) {
         out.status = lin.factor_status;
       } else {
-        out.d2 = structure::forward_substitute(lin.L, out.nu).squaredNorm();
+        out.d2 = whitened_residual(lin, out.nu).squaredNorm();
       }
       return out;
     } else {
@@ -198,8 +205,26 @@ class Ekf {
     }
   }
 
+  /// What a plot's distance needs besides h(x), per form: the lower factor
+  /// L of S (nu -> L^-1 nu), or the factors of R and of the whitened S_w
+  /// with their reciprocal diagonals (nu -> Ls^-1 Lr^-1 nu, no division).
+  struct BatchFactor {
+    MeasCov L;
+    MeasVec whiten(const MeasVec& nu) const { return structure::forward_substitute(L, nu); }
+  };
+  struct WhitenedFactor {
+    MeasCov Lr;
+    MeasVec inv_lr;
+    MeasCov Ls;
+    MeasVec inv_ls;
+    MeasVec whiten(const MeasVec& nu) const {
+      return structure::forward_substitute_reciprocal(Ls, inv_ls, structure::forward_substitute_reciprocal(Lr, inv_lr, nu));
+    }
+  };
+  using FactorOfS = std::conditional_t<kWhitenedSparse, WhitenedFactor, BatchFactor>;
+
   /// What every plot is measured against until x or P changes: h(x) and
-  /// the factor of S = H P H^T + R (structured batch path). A gate takes it
+  /// the factor of S = H P H^T + R (structured paths). A gate takes it
   /// once per track and frame; each plot then costs its residual and one
   /// forward substitution. A snapshot: it reads the filter's measurement
   /// model, so it lives no longer than the filter.
@@ -212,24 +237,24 @@ class Ekf {
       const MeasVec nu = measurement_->residual(z, z_hat_);
       if (status_ == Status::kNonFinite || !all_finite(nu)) return {Scalar(0), Status::kNonFinite};
       if (status_ != Status::kOk) return {Scalar(0), status_};
-      return {structure::forward_substitute(L_, nu).squaredNorm(), Status::kOk};
+      return {factor_.whiten(nu).squaredNorm(), Status::kOk};
     }
 
    private:
     friend class Ekf;
-    PredictedMeasurement(const Measurement& h, const MeasVec& z_hat, const MeasCov& L, Status s)
-        : measurement_(&h), z_hat_(z_hat), L_(L), status_(s) {}
+    PredictedMeasurement(const Measurement& h, const MeasVec& z_hat, const FactorOfS& f, Status s)
+        : measurement_(&h), z_hat_(z_hat), factor_(f), status_(s) {}
     const Measurement* measurement_;
     MeasVec z_hat_;
-    MeasCov L_;
+    FactorOfS factor_;
     Status status_;
   };
 
-  template <bool kEnabled = kSparseUpdate && kForm == EkfUpdateForm::kBatch>
+  template <bool kEnabled = kSparseUpdate>
     requires kEnabled
   PredictedMeasurement predicted_measurement() const {
     const auto& lin = factored_linearisation();
-    return PredictedMeasurement(measurement_, lin.z_hat, lin.L, lin.factor_status);
+    return PredictedMeasurement(measurement_, lin.z_hat, factor_of(lin), lin.factor_status);
   }
 
   /// Innovation of z with an explicit measurement noise R.
@@ -246,8 +271,11 @@ class Ekf {
       structure::add_symmetrised(out.S, R);
       if (!all_finite(lin.J.Hc) || !all_finite(out.nu) || !all_finite(out.S)) {
         out.status = Status::kNonFinite;
-      } else if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
-        if (!whitened_nis(lin.J.full(), out.nu, R, out.d2)) out.status = Status::kNotPositiveDefinite;
+      } else if constexpr (kWhitenedSparse) {
+        WhitenedFactor f;
+        auto Jw = lin.J;  // Hw, written by whitened_factor_for()
+        out.status = whitened_factor_for(lin.J, R, f, Jw);
+        if (out.status == Status::kOk) out.d2 = f.whiten(out.nu).squaredNorm();
       } else {
         if (!structure::nis(out.S, out.nu, out.d2)) out.status = Status::kNotPositiveDefinite;
       }
@@ -276,14 +304,18 @@ class Ekf {
   /// Update with z and the model's R.
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z) {
-    if constexpr (kSparseUpdate && kForm == EkfUpdateForm::kBatch) {
+    if constexpr (kSparseUpdate) {
       diag_.fused = false;
       if (!all_finite(z)) return fail(Status::kNonFinite);
       const auto& lin = factored_linearisation();
       const MeasVec nu = measurement_.residual(z, lin.z_hat);
       if (lin.factor_status == Status::kNonFinite || !all_finite(nu)) return fail(Status::kNonFinite);
       if (lin.factor_status != Status::kOk) return fail(lin.factor_status);
-      return fold_in(nu, lin.S, lin.L);
+      if constexpr (kWhitenedSparse) {
+        return fold_in_whitened(nu, lin.S, lin.Jw, factor_of(lin));
+      } else {
+        return fold_in(nu, lin.S, lin.L);
+      }
     } else {
       return update(z, measurement_.noise());
     }
@@ -520,10 +552,68 @@ class Ekf {
   [[nodiscard]] Status update_sequential(const MeasVec& z, const MeasCov& R) {
     diag_.fused = false;
     if (!all_finite(z) || !all_finite(R)) return fail(Status::kNonFinite);
+    if constexpr (kSparseUpdate) {
+      return update_whitened(z, R);
+    }
     const Jacobian H = measurement_.jacobian(x_);
     const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
     if (!all_finite(H) || !all_finite(nu)) return fail(Status::kNonFinite);
     return fold_in_sequential(nu, H, R);
+  }
+
+  /// Sequential whitened form on the non-zero Jacobian columns with an
+  /// explicit R: the shared linearisation, R's factor and the whitened
+  /// factor for this R, then fold_in_whitened().
+  template <bool kEnabled = kWhitenedSparse>
+    requires kEnabled
+  [[nodiscard]] Status update_whitened(const MeasVec& z, const MeasCov& R) {
+    const auto& lin = linearisation();
+    const MeasVec nu = measurement_.residual(z, lin.z_hat);
+    MeasCov S = lin.HPHt;
+    structure::add_symmetrised(S, R);
+    if (!all_finite(lin.J.Hc) || !all_finite(nu) || !all_finite(S)) return fail(Status::kNonFinite);
+    WhitenedFactor f;
+    auto Jw = lin.J;  // Hw, written by whitened_factor_for()
+    if (const Status c = whitened_factor_for(lin.J, R, f, Jw); c != Status::kOk) return fail(c);
+    return fold_in_whitened(nu, S, Jw, f);
+  }
+
+  /// R = Lr Lr^T, Hw = Lr^-1 H and S_w = Hw P Hw^T + I = Ls Ls^T for an
+  /// explicit R (structure::whitened_factor()).
+  template <bool kEnabled = kWhitenedSparse>
+    requires kEnabled
+  Status whitened_factor_for(const auto& J, const MeasCov& R, WhitenedFactor& f, auto& Jw) const {
+    f.Lr = MeasCov::Zero();
+    if (!structure::cholesky_lower_reciprocal(R, f.Lr, f.inv_lr) || !all_finite(f.inv_lr)) {
+      return Status::kNotPositiveDefinite;
+    }
+    f.Ls = MeasCov::Zero();
+    return structure::whitened_factor(J, f.Lr, f.inv_lr, P_, Jw, f.Ls, f.inv_ls);
+  }
+
+  /// The whitened channels folded in through the factor of S_w (the
+  /// sequential form written with U = P Hw^T Ls^-T: WhitenedLinearisation):
+  /// x + U w and P - U U^T on the upper triangle, mirrored, with
+  /// w = Ls^-1 Lr^-1 nu; NIS |w|^2. S (unwhitened) is for the diagnostics.
+  template <bool kEnabled = kWhitenedSparse>
+    requires kEnabled
+  [[nodiscard]] Status fold_in_whitened(const MeasVec& nu, const MeasCov& S, const auto& Jw, const WhitenedFactor& f) {
+    const MeasVec nuw = structure::forward_substitute_reciprocal(f.Lr, f.inv_lr, nu);
+    const Mat<Scalar, kStateDim, kMeasDim> PHt = Jw.p_ht(P_);
+    Mat<Scalar, kStateDim, kMeasDim> U;
+    MeasVec w;
+    structure::whitened_gain_reciprocal(PHt, f.Ls, f.inv_ls, nuw, U, w);
+    const State x = x_ + U * w;
+    const Cov P = structure::symmetric_downdate(P_, U);
+    const Scalar nis = w.squaredNorm();
+    if (!ScalarTraits<Scalar>::is_finite(nis)) return fail(Status::kNonFinite);
+    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+
+    x_ = x;
+    P_ = P;
+    invalidate_linearisation();
+    diag_.fused_all(nu, S.diagonal(), nis);
+    return Status::kOk;
   }
 
   /// The sequential whitened update from nu, H and R (finite).
@@ -641,6 +731,7 @@ class Ekf {
   /// Mutable model access drops the shared linearisation (its parameters may change).
   Measurement& measurement() {
     invalidate_linearisation();
+    if constexpr (kWhitenedSparse) lin_.noise_valid = false;
     return measurement_;
   }
   /// Diagnostics of the last update attempt.
@@ -673,7 +764,9 @@ class Ekf {
   /// The linearisation with S = H P H^T + R for the model's own R and its
   /// factor, computed on first use (an explicit-R caller such as R2-AEKF
   /// never pays for them).
-  template <bool kEnabled = kSparseUpdate && kForm == EkfUpdateForm::kBatch>
+  /// The sequential whitened form factors R once (it does not depend on x
+  /// or P) and S_w per linearisation (WhitenedLinearisation).
+  template <bool kEnabled = kSparseUpdate>
     requires kEnabled
   const auto& factored_linearisation() const {
     linearisation();
@@ -683,12 +776,44 @@ class Ekf {
       structure::add_symmetrised(lin_.S, R);
       if (!all_finite(R) || !all_finite(lin_.J.Hc) || !all_finite(lin_.S)) {
         lin_.factor_status = Status::kNonFinite;
+      } else if constexpr (kWhitenedSparse) {
+        if (!lin_.noise_valid) {
+          lin_.Lr = MeasCov::Zero();
+          const bool ok = structure::cholesky_lower_reciprocal(R, lin_.Lr, lin_.inv_lr) && all_finite(lin_.inv_lr);
+          lin_.noise_status = ok ? Status::kOk : Status::kNotPositiveDefinite;
+          lin_.noise_valid = true;
+        }
+        lin_.factor_status = lin_.noise_status;
+        if (lin_.factor_status == Status::kOk) {
+          lin_.factor_status = structure::whitened_factor(lin_.J, lin_.Lr, lin_.inv_lr, P_, lin_.Jw, lin_.Ls, lin_.inv_ls);
+        }
       } else {
         lin_.factor_status = structure::cholesky_lower(lin_.S, lin_.L) ? Status::kOk : Status::kNotPositiveDefinite;
       }
       lin_.factor_valid = true;
     }
     return lin_;
+  }
+
+  /// The factor of S a plot's distance uses (FactorOfS), from the factored linearisation.
+  template <class Lin>
+  static FactorOfS factor_of(const Lin& lin) {
+    if constexpr (kWhitenedSparse) {
+      return WhitenedFactor{lin.Lr, lin.inv_lr, lin.Ls, lin.inv_ls};
+    } else {
+      return BatchFactor{lin.L};
+    }
+  }
+
+  /// factor_of(lin).whiten(nu) without the copy.
+  template <class Lin>
+  static MeasVec whitened_residual(const Lin& lin, const MeasVec& nu) {
+    if constexpr (kWhitenedSparse) {
+      return structure::forward_substitute_reciprocal(
+          lin.Ls, lin.inv_ls, structure::forward_substitute_reciprocal(lin.Lr, lin.inv_lr, nu));
+    } else {
+      return structure::forward_substitute(lin.L, nu);
+    }
   }
 
   void invalidate_linearisation() {
@@ -752,8 +877,11 @@ class Ekf {
   Diagnostics diag_;
   // Shared linearisation (sparse-Jacobian models only); like any filter
   // here, one object is not to be used from two threads at once.
-  mutable std::conditional_t<kSparseUpdate, typename structure::LinearisationFor<Measurement>::type,
-                             structure::NoLinearisation>
+  mutable std::conditional_t<
+      kSparseUpdate,
+      std::conditional_t<kWhitenedSparse, typename structure::WhitenedLinearisationFor<Measurement>::type,
+                         typename structure::LinearisationFor<Measurement>::type>,
+      structure::NoLinearisation>
       lin_{};
 };
 

@@ -118,6 +118,36 @@ typename M::Cov transform_covariance(const M& motion, const typename M::Cov& P, 
   constexpr bool kUnitUpper = UnitUpperAxisTransition<M>;
   const Mat<S, d, d> F1 = motion.axis_transition(dt);
   typename M::Cov out;
+  if constexpr (ScalarTraits<S>::kIsFixedPoint) {
+    // The same products in rolled loops: in fixed point every product is a
+    // call, so unrolling saves little time and costs a Cortex-M0+ image
+    // kilobytes of text.
+    for (int i = 0; i < kAxes; ++i) {
+      for (int j = i; j < kAxes; ++j) {
+        Mat<S, d, d> G;
+        for (int r = 0; r < d; ++r) {
+          for (int c = 0; c < d; ++c) {
+            S v = kUnitUpper ? P(i * d + r, j * d + c) : F1(r, r) * P(i * d + r, j * d + c);
+            for (int k = kUnitUpper ? r + 1 : 0; k < d; ++k) {
+              if (k != r) v += F1(r, k) * P(i * d + k, j * d + c);
+            }
+            G(r, c) = v;
+          }
+        }
+        for (int r = 0; r < d; ++r) {
+          for (int c = i == j ? r : 0; c < d; ++c) {
+            S v = kUnitUpper ? G(r, c) : G(r, c) * F1(c, c);
+            for (int k = kUnitUpper ? c + 1 : 0; k < d; ++k) {
+              if (k != c) v += G(r, k) * F1(c, k);
+            }
+            out(i * d + r, j * d + c) = v;
+            out(j * d + c, i * d + r) = v;
+          }
+        }
+      }
+    }
+    return out;
+  }
   static_for<0, kAxes>([&](auto ia) {
     constexpr int i = decltype(ia)::value;
     static_for<i, kAxes>([&](auto ja) {
@@ -297,6 +327,63 @@ bool nis(const Mat<S, m, m>& Sm, const Vec<S, m>& nu, S& d2) {
   return true;
 }
 
+/// S = L L^T, L lower triangular, with inv_diag(j) = 1 / L(j, j): the
+/// reciprocals let every later substitution multiply instead of divide (a
+/// fixed-point division is a 64-step loop; here there are m of them, one
+/// per column, instead of one per entry). Used where the diagonal is well
+/// scaled: the whitened S_w (diagonal >= 1, so 1 / L(j, j) is in (0, 1])
+/// and the factor of R (a sensor's standard deviations).
+/// @return false if S is not positive definite (L and inv_diag then hold
+///         unit pivots where it failed).
+template <class S, int m>
+bool cholesky_lower_reciprocal(const Mat<S, m, m>& Sm, Mat<S, m, m>& L, Vec<S, m>& inv_diag) {
+  bool ok = true;
+  static_for<0, m>([&](auto ja) {
+    constexpr int j = decltype(ja)::value;
+    S dj = Sm(j, j);
+    static_for<0, j>([&](auto ka) { dj -= L(j, decltype(ka)::value) * L(j, decltype(ka)::value); });
+    ok = ok && dj > S(0);
+    L(j, j) = ScalarTraits<S>::sqrt(dj > S(0) ? dj : S(1));
+    inv_diag(j) = S(1) / L(j, j);
+    static_for<0, j>([&](auto ka) { L(decltype(ka)::value, j) = S(0); });
+    static_for<j + 1, m>([&](auto ia) {
+      constexpr int i = decltype(ia)::value;
+      S v = Sm(i, j);
+      static_for<0, j>([&](auto ka) { v -= L(i, decltype(ka)::value) * L(j, decltype(ka)::value); });
+      L(i, j) = v * inv_diag(j);
+    });
+  });
+  return ok;
+}
+
+/// y = L^-1 v by forward substitution with the reciprocals of L's diagonal
+/// (cholesky_lower_reciprocal()).
+template <class S, int m>
+Vec<S, m> forward_substitute_reciprocal(const Mat<S, m, m>& L, const Vec<S, m>& inv_diag, const Vec<S, m>& v) {
+  Vec<S, m> y;
+  static_for<0, m>([&](auto ia) {
+    constexpr int i = decltype(ia)::value;
+    S t = v(i);
+    static_for<0, i>([&](auto ka) { t -= L(i, decltype(ka)::value) * y(decltype(ka)::value); });
+    y(i) = t * inv_diag(i);
+  });
+  return y;
+}
+
+/// whitened_gain_factored() with the reciprocals of L's diagonal: U = P H^T
+/// L^-T column by column, w = L^-1 nu.
+template <class S, int n, int m>
+void whitened_gain_reciprocal(const Mat<S, n, m>& PHt, const Mat<S, m, m>& L, const Vec<S, m>& inv_diag,
+                              const Vec<S, m>& nu, Mat<S, n, m>& U, Vec<S, m>& w) {
+  w = forward_substitute_reciprocal(L, inv_diag, nu);
+  static_for<0, m>([&](auto ja) {
+    constexpr int j = decltype(ja)::value;
+    Vec<S, n> u = PHt.col(j);
+    static_for<0, j>([&](auto ka) { u -= U.col(decltype(ka)::value) * L(j, decltype(ka)::value); });
+    U.col(j) = u * inv_diag(j);
+  });
+}
+
 /// whitened_gain() (below) with the factor L of S = L L^T already known
 /// (lower triangular, positive diagonal).
 template <class S, int n, int m>
@@ -333,6 +420,17 @@ bool whitened_gain(const Mat<S, n, m>& PHt, const Mat<S, m, m>& Sm, const Vec<S,
 template <class S, int n, int m>
 Mat<S, n, n> symmetric_downdate(const Mat<S, n, n>& P, const Mat<S, n, m>& U) {
   Mat<S, n, n> out;
+  if constexpr (ScalarTraits<S>::kIsFixedPoint) {  // rolled: see transform_covariance()
+    for (int c = 0; c < n; ++c) {
+      for (int r = 0; r <= c; ++r) {
+        S v = P(r, c);
+        for (int j = 0; j < m; ++j) v -= U(r, j) * U(c, j);
+        out(r, c) = v;
+        out(c, r) = v;
+      }
+    }
+    return out;
+  }
   // Column c, rows 0..c (vectorised down the column), then mirrored into row c.
   static_for<0, n>([&](auto ca) {
     constexpr int c = decltype(ca)::value;
@@ -442,6 +540,59 @@ struct Linearisation {
   bool valid = false;                          ///< false: recompute before use.
 };
 
+/// The linearisation of the sequential whitened form (Ekf's header
+/// comment): besides h(x), the Jacobian columns and H P H^T, the factor of
+/// R = Lr Lr^T (kept until the model changes: R does not depend on x or P),
+/// the whitened columns Hw = Lr^-1 Hc and the factor of S_w = Hw P Hw^T + I
+/// = Ls Ls^T, with the reciprocals of both diagonals. Folding the whitened
+/// channels in one at a time, channel j's divisor is s_j = Ls(j, j)^2 >= 1
+/// and its gain column P_j-1 h_j / sqrt(s_j) is column j of U = P Hw^T
+/// Ls^-T, so the sequential update is x + U w, P - U U^T with w = Ls^-1
+/// Lr^-1 nu, and the NIS is |w|^2: the same factors serve the gate's
+/// distance of every plot and the update.
+template <SparseJacobianMeasurement H>
+struct WhitenedLinearisation {
+  using MeasCov = typename SparseJacobian<H>::MeasCov;
+  using MeasVec = typename H::Measurement;
+  // As in Linearisation<H>, without the batch form's factor L.
+  MeasVec z_hat = MeasVec::Zero();                           ///< h(x).
+  SparseJacobian<H> J{SparseJacobian<H>::Compact::Zero()};  ///< Non-zero columns of dh/dx at x.
+  MeasCov HPHt = MeasCov::Zero();                            ///< H P H^T (exactly symmetric).
+  MeasCov S = MeasCov::Zero();                               ///< H P H^T + R with the model's R.
+  Status factor_status = Status::kNotInitialised;            ///< Of the factor of S_w.
+  bool factor_valid = false;
+  bool valid = false;
+  MeasCov Lr = MeasCov::Zero();                                     ///< R = Lr Lr^T, lower.
+  MeasVec inv_lr = MeasVec::Zero();                                 ///< 1 / Lr(j, j).
+  SparseJacobian<H> Jw{SparseJacobian<H>::Compact::Zero()};         ///< Hw = Lr^-1 Hc.
+  MeasCov Ls = MeasCov::Zero();                                     ///< S_w = Ls Ls^T, lower, diagonal >= 1.
+  MeasVec inv_ls = MeasVec::Zero();                                 ///< 1 / Ls(j, j), in (0, 1].
+  Status noise_status = Status::kNotInitialised;                    ///< Of the factor of R.
+  bool noise_valid = false;  ///< false: Lr and inv_lr to be recomputed (the model changed).
+};
+
+/// Hw = Lr^-1 Hc (rows by forward substitution) and the factor of
+/// S_w = Hw P Hw^T + I for the whitened form, given R's factor.
+/// @return kOk, kNonFinite (Hw or S_w) or kNotPositiveDefinite (S_w).
+template <SparseJacobianMeasurement H>
+Status whitened_factor(const SparseJacobian<H>& J, const typename SparseJacobian<H>::MeasCov& Lr,
+                       const typename H::Measurement& inv_lr, const typename SparseJacobian<H>::Cov& P,
+                       SparseJacobian<H>& Jw, typename SparseJacobian<H>::MeasCov& Ls,
+                       typename H::Measurement& inv_ls) {
+  using S = typename H::Scalar;
+  constexpr int m = H::kMeasDim;
+  static_for<0, m>([&](auto ia) {
+    constexpr int i = decltype(ia)::value;
+    auto row = J.Hc.row(i).eval();
+    static_for<0, i>([&](auto ka) { row -= Lr(i, decltype(ka)::value) * Jw.Hc.row(decltype(ka)::value); });
+    Jw.Hc.row(i) = row * inv_lr(i);
+  });
+  typename SparseJacobian<H>::MeasCov Sw = Jw.hpht(P);
+  static_for<0, m>([&](auto ja) { Sw(decltype(ja)::value, decltype(ja)::value) += S(1); });
+  if (!all_finite(Jw.Hc) || !all_finite(Sw)) return Status::kNonFinite;
+  return cholesky_lower_reciprocal(Sw, Ls, inv_ls) ? Status::kOk : Status::kNotPositiveDefinite;
+}
+
 /// Placeholder of the cache for a measurement without the structure.
 struct NoLinearisation {};
 
@@ -453,6 +604,16 @@ struct LinearisationFor {
 template <SparseJacobianMeasurement H>
 struct LinearisationFor<H> {
   using type = Linearisation<H>;
+};
+
+/// WhitenedLinearisation<H> if H has a sparse Jacobian, NoLinearisation otherwise.
+template <class H>
+struct WhitenedLinearisationFor {
+  using type = NoLinearisation;
+};
+template <SparseJacobianMeasurement H>
+struct WhitenedLinearisationFor<H> {
+  using type = WhitenedLinearisation<H>;
 };
 
 }  // namespace structure

@@ -5,8 +5,8 @@
 //
 // The test is an LDL^T factorisation of the upper triangle without square
 // roots (so it runs in fixed point too): every pivot D_j must be positive
-// and finite. n(n-1)/2 divisions and about n^3/6 + n^2 multiply-adds (15
-// and about 65 for a 6x6 P).
+// and finite. n(n-1)/2 divisions (fixed point: n - 1 prepared reciprocals)
+// and about n^3/6 + n^2 multiply-adds (15 and about 65 for a 6x6 P).
 #pragma once
 
 #include <cstddef>
@@ -22,18 +22,21 @@ namespace detail {
 
 // Column j of the LDL^T below: w_k = L(j, k) D_k, D_j = P_jj - sum
 // L(j, k) w_k, L(i, j) = (P_ij - sum L(i, k) w_k) / D_j, with D_j kept on
-// the diagonal of L. L is formed by a division, not by a reciprocal of the
-// pivot: in fixed point 1/D of a large pivot (a position variance of 1e9
-// m^2) keeps only a few significant bits. Each product L(i, k) w_k =
-// L(i, k) L(j, k) D_k is bounded by sqrt(P_ii P_jj) for a positive definite
-// P, so fixed point cannot overflow on a matrix that passes.
+// the diagonal of L. Each product L(i, k) w_k = L(i, k) L(j, k) D_k is
+// bounded by sqrt(P_ii P_jj) for a positive definite P, so fixed point
+// cannot overflow on a matrix that passes.
 // The floating-point form has its loops unrolled (192 instead of about 600
 // instructions at n = 6 on x86-64); the fixed-point form keeps them rolled,
 // because there every product is a 64-bit multiply-and-shift and the
 // unrolled copy costs a Cortex-M0+ image 1 KiB of text for no measurable
 // gain.
+// Fixed point: each column divides by its pivot through one prepared
+// reciprocal (FixedPoint::Divisor: 63 significant bits, a quotient within
+// 1.5 LSB of the rounded one) instead of a 64-step division per entry; a
+// pivot of 1e9 m^2 keeps its precision, which a plain 1/D in Q format
+// would not. Only the pivots' signs leave this function.
 template <class S, int n, class M>
-bool ldlt_pivots_positive_rolled(const M& P) {
+bool ldlt_pivots_positive_fixed(const M& P) {
   constexpr std::size_t kN = static_cast<std::size_t>(n);
   S L[kN][kN];
   S w[kN];
@@ -45,10 +48,12 @@ bool ldlt_pivots_positive_rolled(const M& P) {
     }
     if (!(d > S(0)) || !ScalarTraits<S>::is_finite(d)) return false;
     L[j][j] = d;
+    if (j + 1 == n) break;
+    const typename S::Divisor by_d = S::divisor(d);
     for (int i = j + 1; i < n; ++i) {
       S v = P(j, i);  // upper triangle: P(i, j) == P(j, i)
       for (int k = 0; k < j; ++k) v -= L[i][k] * w[k];
-      L[i][j] = v / d;
+      L[i][j] = by_d.divide(v);
     }
   }
   return true;
@@ -93,7 +98,7 @@ bool is_positive_definite(const Eigen::MatrixBase<Derived>& P) {
   constexpr int n = Derived::RowsAtCompileTime;
   static_assert(n > 0 && n == Derived::ColsAtCompileTime, "a fixed-size square matrix");
   if constexpr (ScalarTraits<S>::kIsFixedPoint) {
-    return detail::ldlt_pivots_positive_rolled<S, n>(P);
+    return detail::ldlt_pivots_positive_fixed<S, n>(P);
   } else {
     return detail::ldlt_pivots_positive_unrolled<S, n>(P);
   }

@@ -32,6 +32,16 @@
 #include <type_traits>
 #include <utility>
 
+// Thumb-1 (Cortex-M0+) builds keep one out-of-line copy of the product and
+// of the prepared division: inlined, each is about 150 bytes of 64-bit
+// arithmetic, and the filters' kernels hold hundreds of products (the
+// board's text budget).
+#if defined(__thumb__) && !defined(__thumb2__)
+#define KESTREL_FIXED_MUL_OUTLINE [[gnu::noinline]]
+#else
+#define KESTREL_FIXED_MUL_OUTLINE
+#endif
+
 namespace kestrel {
 namespace fixed {
 
@@ -70,16 +80,47 @@ struct U128 {
 
 constexpr std::uint64_t lo32(std::uint64_t v) { return v & 0xFFFFFFFFu; }
 
+/// Exact 32 x 32 -> 64-bit product from four 16 x 16 -> 32-bit products:
+/// what a core without a long multiply (ARMv6-M's MULS gives the low 32
+/// bits only) does, inline, where the compiler would call the general
+/// 64 x 64-bit __aeabi_lmul for each piece.
+constexpr std::uint64_t mul_32x32_limbs(std::uint32_t a, std::uint32_t b) {
+  const std::uint32_t a0 = a & 0xFFFFu;
+  const std::uint32_t a1 = a >> 16;
+  const std::uint32_t b0 = b & 0xFFFFu;
+  const std::uint32_t b1 = b >> 16;
+  const std::uint32_t p00 = a0 * b0;
+  const std::uint32_t p01 = a0 * b1;
+  const std::uint32_t p10 = a1 * b0;
+  const std::uint32_t p11 = a1 * b1;
+  const std::uint32_t mid = p01 + p10;
+  const std::uint32_t mid_carry = mid < p01 ? 0x10000u : 0u;  // bit 32 of mid, weight 2^48
+  const std::uint32_t lo = p00 + (mid << 16);
+  const std::uint32_t lo_carry = lo < p00 ? 1u : 0u;
+  const std::uint32_t hi = p11 + (mid >> 16) + mid_carry + lo_carry;
+  return (std::uint64_t{hi} << 32) | lo;
+}
+
+/// Exact 32 x 32 -> 64-bit product: mul_32x32_limbs() on Thumb-1 (no
+/// long multiply), the native product elsewhere. The same value either way.
+constexpr std::uint64_t mul_32x32(std::uint64_t a, std::uint64_t b) {
+#if defined(__thumb__) && !defined(__thumb2__)
+  return mul_32x32_limbs(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b));
+#else
+  return a * b;
+#endif
+}
+
 /// Exact 64 x 64 -> 128-bit product from four 32 x 32 -> 64-bit products.
 constexpr U128 mul_wide(std::uint64_t a, std::uint64_t b) {
   const std::uint64_t a0 = lo32(a);
   const std::uint64_t a1 = a >> 32;
   const std::uint64_t b0 = lo32(b);
   const std::uint64_t b1 = b >> 32;
-  const std::uint64_t p00 = a0 * b0;
-  const std::uint64_t p01 = a0 * b1;
-  const std::uint64_t p10 = a1 * b0;
-  const std::uint64_t p11 = a1 * b1;
+  const std::uint64_t p00 = mul_32x32(a0, b0);
+  const std::uint64_t p01 = mul_32x32(a0, b1);
+  const std::uint64_t p10 = mul_32x32(a1, b0);
+  const std::uint64_t p11 = mul_32x32(a1, b1);
   const std::uint64_t mid = (p00 >> 32) + lo32(p01) + lo32(p10);  // < 3 * 2^32: no carry out
   return U128{p11 + (p01 >> 32) + (p10 >> 32) + (mid >> 32), (mid << 32) | lo32(p00)};
 }
@@ -175,6 +216,12 @@ constexpr U128 udiv_round(U128 n, std::uint64_t d) {
   }
   return U128{0, qr.q};
 }
+
+/// round(v / 2^s), ties away from zero in magnitude, for 0 < s < 128.
+constexpr U128 round_shift_wide(U128 v, int s) { return shr(add(v, shl(U128{0, 1}, s - 1)), s); }
+
+/// Bit length of v > 0 (1..64).
+constexpr int bit_length(std::uint64_t v) { return 64 - std::countl_zero(v); }
 
 /// round(sqrt(n)) of an unsigned 128-bit integer, digit by digit (two bits
 /// of n per step, exactly 64 steps). Never a tie: n is an integer.
@@ -306,7 +353,7 @@ class FixedPoint {
 
   friend constexpr FixedPoint operator-(FixedPoint a, FixedPoint b) { return a + (-b); }
 
-  friend constexpr FixedPoint operator*(FixedPoint a, FixedPoint b) {
+  KESTREL_FIXED_MUL_OUTLINE friend constexpr FixedPoint operator*(FixedPoint a, FixedPoint b) {
     const bool negative = (a.raw_ < 0) != (b.raw_ < 0);
     if (!a.is_finite() || !b.is_finite()) {
       return from_raw(negative ? detail::kNegOverflow : detail::kPosOverflow);
@@ -325,6 +372,42 @@ class FixedPoint {
     }
     const detail::U128 n = detail::shl(detail::U128{0, detail::magnitude(a.raw_)}, kFracBits);
     return from_raw(detail::to_raw_saturating(detail::udiv_round(n, detail::magnitude(b.raw_)), negative));
+  }
+
+  /// A positive divisor prepared for repeated division by it: one 64-step
+  /// division here, then each quotient is a 64 x 64-bit product and a
+  /// shift. The normalised reciprocal m = round(2^(n + 62) / d) (d of n
+  /// bits) has 63 significant bits, so a quotient is within 1.5 LSB of the
+  /// correctly rounded a / d: for work whose result is a decision, not
+  /// stored bits (is_positive_definite's LDL^T pivots).
+  class Divisor {
+   public:
+    /// a / d within 1.5 LSB; saturated a stays saturated.
+    KESTREL_FIXED_MUL_OUTLINE constexpr FixedPoint divide(FixedPoint a) const {
+      const bool negative = a.raw_ < 0;
+      if (!a.is_finite() || !valid_) return from_raw(negative ? detail::kNegOverflow : detail::kPosOverflow);
+      const detail::U128 p = detail::mul_wide(detail::magnitude(a.raw_), m_);
+      return from_raw(detail::to_raw_saturating(detail::round_shift_wide(p, shift_), negative));
+    }
+
+   private:
+    friend class FixedPoint;
+    std::uint64_t m_ = 0;
+    int shift_ = 1;
+    bool valid_ = false;
+  };
+
+  /// d prepared for Divisor::divide(); d must be positive and finite (else
+  /// every quotient saturates).
+  static constexpr Divisor divisor(FixedPoint d) {
+    Divisor out;
+    if (!(d.raw_ > 0) || !d.is_finite()) return out;
+    const auto dm = static_cast<std::uint64_t>(d.raw_);
+    const int n = detail::bit_length(dm);
+    out.m_ = detail::udiv_round(detail::shl(detail::U128{0, 1}, n + 62), dm).lo;
+    out.shift_ = n + 62 - kFracBits;
+    out.valid_ = true;
+    return out;
   }
 
   constexpr FixedPoint& operator+=(FixedPoint b) { return *this = *this + b; }

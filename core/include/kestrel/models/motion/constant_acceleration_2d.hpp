@@ -37,11 +37,24 @@ struct ConstantAcceleration2D {
 
   S qj{};  ///< White-jerk power spectral density, m^2/s^5 (per axis).
 
+  /// x / n for the constant divisors of F1, Q1D and the propagation: a
+  /// fixed-point scalar multiplies by the constant 1/n instead (a division
+  /// is a 64-step loop there; 1/n is rounded once, exact for 2 and 8),
+  /// floating point divides.
+  template <int n>
+  static S over(S x) {
+    if constexpr (ScalarTraits<S>::kIsFixedPoint) {
+      return x * S(1.0 / n);
+    } else {
+      return x / S(n);
+    }
+  }
+
   /// F1(dt) = [[1, T, T^2/2], [0, 1, T], [0, 0, 1]].
   AxisMat axis_transition(S dt) const {
     AxisMat F1 = AxisMat::Identity();
     F1(0, 1) = dt;
-    F1(0, 2) = dt * dt / S(2);
+    F1(0, 2) = over<2>(dt * dt);
     F1(1, 2) = dt;
     return F1;
   }
@@ -53,15 +66,15 @@ struct ConstantAcceleration2D {
     const S t3 = t2 * dt;
     const S t4 = t3 * dt;
     const S t5 = t4 * dt;
-    const S q02 = t3 / S(6) * qj;
-    const S q01 = t4 / S(8) * qj;
-    const S q12 = t2 / S(2) * qj;
+    const S q02 = over<6>(t3) * qj;
+    const S q01 = over<8>(t4) * qj;
+    const S q12 = over<2>(t2) * qj;
     AxisMat Q1;
-    Q1(0, 0) = t5 / S(20) * qj;
+    Q1(0, 0) = over<20>(t5) * qj;
     Q1(0, 1) = q01;
     Q1(0, 2) = q02;
     Q1(1, 0) = q01;
-    Q1(1, 1) = t3 / S(3) * qj;
+    Q1(1, 1) = over<3>(t3) * qj;
     Q1(1, 2) = q12;
     Q1(2, 0) = q02;
     Q1(2, 1) = q12;
@@ -89,7 +102,7 @@ struct ConstantAcceleration2D {
 
   /// Noise-free propagation x(t + dt) = F(dt) x(t), per axis.
   State propagate(const State& x, S dt) const {
-    const S half_t2 = dt * dt / S(2);
+    const S half_t2 = over<2>(dt * dt);
     State out;
     for (int a = 0; a < kStateDim; a += kAxisDim) {
       out(a) = x(a) + dt * x(a + 1) + half_t2 * x(a + 2);
