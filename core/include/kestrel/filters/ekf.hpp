@@ -552,7 +552,7 @@ class Ekf {
   [[nodiscard]] Status update_sequential(const MeasVec& z, const MeasCov& R) {
     diag_.fused = false;
     if (!all_finite(z) || !all_finite(R)) return fail(Status::kNonFinite);
-    if constexpr (kSparseUpdate) {
+    if constexpr (kWhitenedSparse) {
       return update_whitened(z, R);
     }
     const Jacobian H = measurement_.jacobian(x_);
