@@ -21,8 +21,11 @@
 #include "bench/instr_count.hpp"
 
 namespace kestrel::bench {
-// One translation unit per family (instr_count.hpp says why).
-void count_ekf_family(const std::vector<FrameSi>& s1);
+// One translation unit per family, and per scalar for the EKF family
+// (instr_count.hpp says why).
+void count_ekf_family_double(const std::vector<FrameSi>& s1);
+void count_ekf_family_float(const std::vector<FrameSi>& s1);
+void count_ekf_family_q31_32(const std::vector<FrameSi>& s1);
 void count_sigma_family(const std::vector<FrameSi>& s1);
 void count_imm_family(const std::vector<FrameSi>& s1);
 }  // namespace kestrel::bench
@@ -43,7 +46,9 @@ int main(int argc, char** argv) {
   }
   try {
     const std::vector<FrameSi> s1 = s1_frames();
-    count_ekf_family(s1);
+    count_ekf_family_double(s1);
+    count_ekf_family_float(s1);
+    count_ekf_family_q31_32(s1);
     count_sigma_family(s1);
     count_imm_family(s1);
   } catch (const std::exception& e) {

@@ -2,10 +2,12 @@
 // The measuring side of kestrel-instr-count (instr_count.cpp): callgrind
 // collection around the measured calls, one dump per path, and the filter
 // and tracker paths of a filter type. Each family of cases is instantiated
-// in its own translation unit (instr_count_<family>.cpp): GCC's inlining
-// decisions depend on what else a unit holds, so a family's counts must not
-// move when another family's cases are added (adding the sigma-point cases
-// to the EKF's unit moved EKF paths by up to 8 %).
+// in its own translation unit (instr_count_<family>.cpp), the EKF family's
+// once per scalar: GCC's inlining decisions depend on what else a unit
+// holds, so one case's count must not move when unrelated cases change
+// (adding the sigma-point cases to the EKF's unit moved EKF paths by up to
+// 8 %; a change to the fixed-point code alone moved the double paths by
+// up to 13 %). A board image holds one scalar, as each unit here does.
 #pragma once
 
 #if __has_include(<valgrind/callgrind.h>)
@@ -20,6 +22,7 @@
 #include <cstring>
 #include <exception>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "bench/bench_cases.hpp"
@@ -146,6 +149,17 @@ void count_tracker(const CaseName& n) {
     }
     dump(path, p.measured_steps());
   }
+}
+
+/// The EKF family's cases (for_each_ekf_case()) whose scalar is S.
+template <class S>
+void count_ekf_cases_in(const std::vector<FrameSi>& s1) {
+  for_each_ekf_case([&]<class F>(const CaseName& n) {
+    if constexpr (std::is_same_v<typename F::Scalar, S>) {
+      count_filter<F>(n, s1);
+      if constexpr (kTrackerPaths<F>) count_tracker<F>(n);
+    }
+  });
 }
 
 }  // namespace kestrel::bench
