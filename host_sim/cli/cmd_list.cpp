@@ -3,9 +3,11 @@
 // --settings, the parameter keys of --set and --config.
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "filters/filter_registry.hpp"
+#include "filters/sensor_settings.hpp"
 #include "filters/settings.hpp"
 #include "scenarios/registry.hpp"
 #include "scenarios/pcl002.hpp"
@@ -21,6 +23,18 @@ int cmd_list(bool settings) {
     for (const SettingInfo& i : setting_table()) {
       std::printf("  %-25s %-34s %-28s %s\n", i.key.c_str(), i.default_text.c_str(), i.range.c_str(),
                   i.meaning.c_str());
+    }
+    const struct {
+      const char* title;
+      std::vector<SettingInfo> table;
+    } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, pcl)", pcl_setting_table()},
+                  {"the underwater tracker (run -s uw003..., uw)", uw_setting_table()}};
+    for (const auto& t : others) {
+      std::printf("keys of --set KEY=VALUE and --config FILE for %s:\n", t.title);
+      for (const SettingInfo& i : t.table) {
+        std::printf("  %-33s %-34s %-30s %s\n", i.key.c_str(), i.default_text.c_str(), i.range.c_str(),
+                    i.meaning.c_str());
+      }
     }
     return 0;
   }

@@ -199,6 +199,53 @@ elseif(CHECK STREQUAL "replay_truth_mismatch")
   file(WRITE ${OUT}/late.truth.csv "${header}\n${row}\n")
   expect_replay_error(m4 "--truth [^ ]*late.truth.csv: no frame of [^ ]*uw.kstr is at a time of the truth .*frames 0.000000 .. 49.000000 s, truth 1000.000000 .. 1000.000000 s"
                       --stream ${OUT}/uw.kstr --truth ${OUT}/late.truth.csv)
+elseif(CHECK STREQUAL "config_set_sensor")
+  # run of a PCL or sonar scenario takes its tracker's keys from --config
+  # and --set (--set wins over the file) and echoes them into its summary;
+  # an unknown key or a value out of range is refused by name, nothing run.
+  file(WRITE ${OUT}/pcl.json "{\"accel_sigma_mps2\": 2, \"confirm_m\": 4, \"confirm_n\": 6}")
+  execute_process(COMMAND ${SIM} run -s pcl002 --runs 1 --no-plots --config ${OUT}/pcl.json --set confirm_n=5
+                          --out ${OUT}/pcl
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "PCL KF sa 2 m/s\\^2, nn, 4-of-5")
+    message(FATAL_ERROR "run -s pcl002 --config --set failed or did not use them (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/pcl/pcl_summary.json summary)
+  foreach(pair "accel_sigma_mps2=2" "confirm_m=4" "confirm_n=5" "gate_confirmed=0.99")
+    string(REPLACE "=" ";" kv ${pair})
+    list(GET kv 0 key)
+    list(GET kv 1 want)
+    string(JSON got GET ${summary} parameters ${key})
+    if(NOT got EQUAL want)
+      message(FATAL_ERROR "pcl_summary.json parameters.${key} is ${got}, expected ${want}")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${SIM} run -s uw003 --runs 1 --no-plots --set per_channel_gate=false --set gate_k_sigma=3
+                          --out ${OUT}/uw
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "UW EKF, no gate,")
+    message(FATAL_ERROR "run -s uw003 --set failed or did not use it (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/uw/uw_summary.json summary)
+  string(JSON gate GET ${summary} parameters per_channel_gate)
+  string(JSON k GET ${summary} tracker gate_k_sigma)
+  if(NOT gate EQUAL 0 OR NOT k EQUAL 3)
+    message(FATAL_ERROR "uw_summary.json: per_channel_gate ${gate}, gate_k_sigma ${k}")
+  endif()
+  foreach(bad "pcl002;confirm_m=9;--set confirm_m=9: out of range \\(whole, 1..8\\)"
+              "uw003;qj=5;--set qj=5: unknown key of the underwater tracker")
+    list(GET bad 0 scenario)
+    list(GET bad 1 set)
+    list(GET bad 2 pattern)
+    execute_process(COMMAND ${SIM} run -s ${scenario} --runs 1 --no-plots --set ${set} --out ${OUT}/bad
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(rc EQUAL 0 OR NOT err MATCHES "${pattern}")
+      message(FATAL_ERROR "run -s ${scenario} --set ${set} was not refused by name (${rc}):\n${out}${err}")
+    endif()
+    if(EXISTS ${OUT}/bad)
+      message(FATAL_ERROR "run -s ${scenario} --set ${set} wrote files")
+    endif()
+  endforeach()
 elseif(CHECK STREQUAL "suite_report")
   # The main job at tiny run counts: every part runs and report.md holds the
   # table of each paper's system.
