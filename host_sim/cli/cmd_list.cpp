@@ -50,14 +50,16 @@ int cmd_list(bool settings) {
   for (const FilterEntry& f : filter_registry()) {
     std::printf("  %-13s %s\n", std::string(f.name).c_str(), std::string(f.description).c_str());
   }
-  std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor):\n ");
+  std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor; "
+              "timing):\n ");
   for (const std::string& n : pcl_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the PCL tracker (with `pcl`: --associator nn|gnn|pda, --manager m-of-n|score)\n",
+  std::printf("\n  filter %s: the PCL tracker (keys: list --settings; with `pcl`: --associator nn|gnn|pda, "
+              "--manager m-of-n|score)\n",
               std::string(kPclFilterName).c_str());
   std::printf("sonar scenarios (run, uw, generate; replay --stream of their streams, --scenario picks the "
-              "installation):\n ");
+              "installation; timing):\n ");
   for (const std::string& n : uw_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the underwater tracker (its options on `uw`)\n", std::string(kSonarFilterName).c_str());
+  std::printf("\n  filter %s: the underwater tracker (keys: list --settings; its other options on `uw`)\n", std::string(kSonarFilterName).c_str());
   std::printf("multi-target radar scenarios (crossing, raid, formation-split above): multi only");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");

@@ -214,8 +214,15 @@ int main(int argc, char** argv) {
   run.filter.radar_only_given =
       given_options(run_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm",
                               "--asterix-out", "--sac", "--sic"});
-  const std::optional<kestrel::hal::FrameKind> run_kind = kestrel::sim::scenario_kind(run.scenario);
-  const bool run_is_radar = !run_kind.has_value() || *run_kind == kestrel::hal::FrameKind::kRadar;
+  const auto is_radar = [](const std::string& scenario) {
+    const std::optional<kestrel::hal::FrameKind> kind = kestrel::sim::scenario_kind(scenario);
+    return !kind.has_value() || *kind == kestrel::hal::FrameKind::kRadar;
+  };
+  const bool run_is_radar = is_radar(run.scenario);
+  const bool timing_is_radar = is_radar(timing.scenario);
+  timing.filter.filter_given = timing_cmd->count("--filter") > 0;
+  timing.filter.radar_only_given =
+      given_options(timing_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm"});
   replay.filter.filter_given = replay_cmd->count("--filter") > 0;
   replay.filter.radar_only_given = given_options(
       replay_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--config", "--set",
@@ -228,9 +235,9 @@ int main(int argc, char** argv) {
     }
     // --config, then --set, under the options of their own (cli/settings_options.cpp)
     // (sweep resolves its own: one of its --set is the swept parameter).
-    // A PCL or sonar run reads its own keys (run_sensor_scenario).
+    // A PCL or sonar run or timing reads its tracker's own keys.
     for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) {
-      if (f != &run.filter || run_is_radar) resolve_settings(*f, f->sets);
+      if ((f != &run.filter || run_is_radar) && (f != &timing.filter || timing_is_radar)) resolve_settings(*f, f->sets);
     }
     if (app.got_subcommand("list")) return cmd_list(list_settings);
     if (app.got_subcommand(generate)) return cmd_generate(gen);
