@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim generate`: one seeded run of a scenario as files a user can
-// replay or inspect: the wire stream, its truth and its plots as CSV, and
-// with --asterix the plots as ASTERIX CAT048 data blocks.
+// replay or inspect: the wire stream, its truth (any kind) and its plots
+// (radar) as CSV, and with --asterix the plots as ASTERIX CAT048 data blocks.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "csv/radar_plot_csv.hpp"
+#include "csv/sensor_truth_csv.hpp"
 #include "csv/truth_csv.hpp"
 #include "montecarlo/pcl_run.hpp"
 #include "montecarlo/uw_run.hpp"
@@ -30,39 +31,44 @@ bool is_name_of(const std::string& name, const std::vector<std::string>& names) 
   return std::find(names.begin(), names.end(), key) != names.end();
 }
 
-// PCL and sonar scenarios: the wire stream only. Their truth and
-// measurement tables are written by `kestrel-sim pcl` / `uw` (run 0).
+// PCL and sonar scenarios: the wire stream and its truth, in the layout
+// `pcl` / `uw` write for run 0 (csv/sensor_truth_csv.hpp), which `replay
+// --truth` scores against.
 int generate_other_kind(const GenerateOptions& o) {
   std::vector<std::uint8_t> bytes;
   std::size_t frames = 0;
   std::string name;
-  if (is_name_of(o.scenario, {"pcl002", "pcl002-hard"})) {
+  const std::filesystem::path stream_path(o.out);
+  const auto truth_path = std::filesystem::path(stream_path).replace_extension(".truth.csv");
+  if (is_name_of(o.scenario, pcl_scenario_names())) {
     const PclScenarioConfig c = pcl_config_by_name(o.scenario);
+    name = c.name;
+    if (o.asterix) throw std::invalid_argument("--asterix: CAT048 carries radar plots only, not " + name);
     const PclScenarioRun run = generate_pcl(c, o.seed);
     bytes = encode_pcl_stream(run);
     frames = run.frames.size();
-    name = c.name;
+    if (stream_path.has_parent_path()) std::filesystem::create_directories(stream_path.parent_path());
+    write_pcl_truth_csv(truth_path, run);
   } else {
     const UwScenarioConfig c = uw_config_by_name(o.scenario);
+    name = c.name;
+    if (o.asterix) throw std::invalid_argument("--asterix: CAT048 carries radar plots only, not " + name);
     const UwScenarioRun run = generate_uw(c, o.seed);
     bytes = encode_uw_stream(run);
     frames = run.frames.size();
-    name = c.name;
+    if (stream_path.has_parent_path()) std::filesystem::create_directories(stream_path.parent_path());
+    write_uw_truth_csv(truth_path, run);
   }
-  if (o.asterix) throw std::invalid_argument("--asterix: CAT048 carries radar plots only, not " + name);
-  const std::filesystem::path stream_path(o.out);
-  if (stream_path.has_parent_path()) std::filesystem::create_directories(stream_path.parent_path());
   write_bytes(stream_path, bytes);
-  std::printf("%s seed %llu: %zu frames, %zu bytes\n  stream %s (truth and measurement tables: `kestrel-sim %s`)\n",
-              name.c_str(), static_cast<unsigned long long>(o.seed), frames, bytes.size(), stream_path.c_str(),
-              name.rfind("pcl", 0) == 0 ? "pcl" : "uw");
+  std::printf("%s seed %llu: %zu frames, %zu bytes\n  stream %s\n  truth  %s\n", name.c_str(),
+              static_cast<unsigned long long>(o.seed), frames, bytes.size(), stream_path.c_str(), truth_path.c_str());
   return 0;
 }
 
 }  // namespace
 
 int cmd_generate(const GenerateOptions& o) {
-  if (is_name_of(o.scenario, {"pcl002", "pcl002-hard"}) || is_name_of(o.scenario, uw_scenario_names())) {
+  if (is_name_of(o.scenario, pcl_scenario_names()) || is_name_of(o.scenario, uw_scenario_names())) {
     return generate_other_kind(o);
   }
   const auto scenario = make_scenario(o.scenario);

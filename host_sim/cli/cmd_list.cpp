@@ -3,9 +3,11 @@
 // --settings, the parameter keys of --set and --config.
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
 #include "filters/filter_registry.hpp"
+#include "filters/sensor_settings.hpp"
 #include "filters/settings.hpp"
 #include "scenarios/registry.hpp"
 #include "scenarios/pcl002.hpp"
@@ -22,6 +24,18 @@ int cmd_list(bool settings) {
       std::printf("  %-25s %-34s %-28s %s\n", i.key.c_str(), i.default_text.c_str(), i.range.c_str(),
                   i.meaning.c_str());
     }
+    const struct {
+      const char* title;
+      std::vector<SettingInfo> table;
+    } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, pcl)", pcl_setting_table()},
+                  {"the underwater tracker (run -s uw003..., uw)", uw_setting_table()}};
+    for (const auto& t : others) {
+      std::printf("keys of --set KEY=VALUE and --config FILE for %s:\n", t.title);
+      for (const SettingInfo& i : t.table) {
+        std::printf("  %-33s %-34s %-30s %s\n", i.key.c_str(), i.default_text.c_str(), i.range.c_str(),
+                    i.meaning.c_str());
+      }
+    }
     return 0;
   }
   // Which commands take each kind: run and replay dispatch on it
@@ -36,14 +50,16 @@ int cmd_list(bool settings) {
   for (const FilterEntry& f : filter_registry()) {
     std::printf("  %-13s %s\n", std::string(f.name).c_str(), std::string(f.description).c_str());
   }
-  std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor):\n ");
+  std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor; "
+              "timing):\n ");
   for (const std::string& n : pcl_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the PCL tracker (with `pcl`: --associator nn|gnn|pda, --manager m-of-n|score)\n",
+  std::printf("\n  filter %s: the PCL tracker (keys: list --settings; with `pcl`: --associator nn|gnn|pda, "
+              "--manager m-of-n|score)\n",
               std::string(kPclFilterName).c_str());
   std::printf("sonar scenarios (run, uw, generate; replay --stream of their streams, --scenario picks the "
-              "installation):\n ");
+              "installation; timing):\n ");
   for (const std::string& n : uw_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the underwater tracker (its options on `uw`)\n", std::string(kSonarFilterName).c_str());
+  std::printf("\n  filter %s: the underwater tracker (keys: list --settings; its other options on `uw`)\n", std::string(kSonarFilterName).c_str());
   std::printf("multi-target radar scenarios (crossing, raid, formation-split above): multi only");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -25,6 +26,10 @@ struct PclOptions {
   std::string out;  ///< Default results/<scenario>.
   bool plots = true;
   double budget_us = 1000.0;
+  /// --config FILE and --set KEY=VALUE: the tracker's keys
+  /// (filters/sensor_settings.hpp), laid under the options of their own.
+  std::string config;
+  std::vector<std::string> sets;
   // Tracker overrides (unset = PclTrackerParams default).
   std::optional<double> accel_sigma_mps2;
   std::optional<unsigned> confirm_m, confirm_n, max_coast_misses;

@@ -4,12 +4,14 @@
 // the same board loop as the simulation. A radar run takes a radar filter and,
 // with a truth CSV, is scored like a scenario run; with --asterix-out its
 // reports are also CAT062. A PCL or sonar stream runs the tracker of its kind
-// with a scenario's sensor parameters, unscored.
+// with a scenario's sensor parameters and, with the truth CSV of its kind,
+// is scored with that kind's metrics, as `pcl` and `uw` score a run.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <iterator>
 #include <optional>
 #include <set>
@@ -18,9 +20,11 @@
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
 #include "csv/radar_plot_csv.hpp"
+#include "csv/sensor_truth_csv.hpp"
 #include "csv/step_csv.hpp"
 #include "csv/truth_csv.hpp"
 #include "filters/filter_registry.hpp"
+#include "metrics/replay_scoring.hpp"
 #include "montecarlo/pcl_run.hpp"
 #include "montecarlo/single_run.hpp"
 #include "montecarlo/uw_run.hpp"
@@ -105,15 +109,51 @@ struct OtherKindResult {
   std::filesystem::path tracks_csv;
   nlohmann::json entry;  ///< Kind-specific summary fields.
   std::string counts;    ///< Kind-specific line for stdout.
+  std::string scored;    ///< With truth: the metrics, for stdout.
 };
 
+/// A replay's truth of any kind, read once; `times_s` for the overlap check.
+struct ReplayTruth {
+  hal::FrameKind kind = hal::FrameKind::kRadar;
+  std::vector<TruthSample> radar;
+  std::vector<PclTruthRow> pcl;
+  std::vector<UwTruthRow> uw;
+  std::vector<double> times_s;
+};
+
+/// The kind's metrics of one run as summary fields: the figures `pcl` /
+/// `uw` write into their summaries, without their run-count and settings
+/// fields (the replay entry has its own).
+nlohmann::json metric_fields(nlohmann::json j, std::initializer_list<const char*> drop) {
+  for (const char* key : drop) j.erase(key);
+  return j;
+}
+
+std::string truth_match_text(const TruthMatch& m) {
+  return std::to_string(m.matched) + " frames scored, " + std::to_string(m.without_truth) +
+         " at a time without truth, " + std::to_string(m.without_time) + " that did not reach the tracker";
+}
+
+nlohmann::json truth_match_json(const TruthMatch& m) {
+  return {{"matched", m.matched}, {"without_truth", m.without_truth}, {"without_time", m.without_time}};
+}
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
 OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
-                           std::uint64_t budget_ns, const std::filesystem::path& dir) {
+                           std::uint64_t budget_ns, const std::filesystem::path& dir, const ReplayTruth* truth) {
   const PclScenarioConfig sc = pcl_config_by_name(scenario_name);
   const PclTrackerParams params = pcl_params_for(sc);
   const TrackerPolicies policies{};  // pcl's defaults: nearest neighbour, M-of-N
-  // No reference frames: which candidate is the target's is unknown here.
-  const PclRunOutput out = run_pcl_stream(std::move(bytes), {}, sc, params, policies, budget_ns);
+  // The truth names the target's detection of each frame; without it which
+  // candidate is the target's is unknown.
+  const PclTargetLocator locate =
+      truth != nullptr ? pcl_target_locator(truth->pcl) : PclTargetLocator([](const hal::Frame&) { return -1; });
+  const PclRunOutput out = run_pcl_stream(std::move(bytes), locate, sc, params, policies, budget_ns);
   OtherKindResult r;
   r.stats = out.stats;
   r.tracks_csv = dir / "pcl_tracks.csv";
@@ -128,7 +168,33 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
     frames_with_track += f.tracks.empty() ? 0 : 1;
     for (const PclTrackRow& t : f.tracks) ids.insert(t.id);
   }
-  write_pcl_tracks_csv(r.tracks_csv, out.frames, time_s, pcl_lambda_m(sc), nullptr, PclTolerance{});
+  const PclTolerance tolerance{};
+  std::optional<PclReplayScore> score;
+  if (truth != nullptr) score = score_pcl_replay(out, truth->pcl, tolerance);
+  write_pcl_tracks_csv(r.tracks_csv, out.frames, time_s, pcl_lambda_m(sc), score ? &score->truth_per_frame : nullptr,
+                       tolerance);
+  if (score) {
+    const PclRunMetrics& m = score->metrics;
+    PclMonteCarloConfig config;
+    config.runs = 1;
+    config.budget_ns = budget_ns;
+    config.policies = policies;
+    config.tolerance = tolerance;
+    r.entry.update(metric_fields(pcl_summary_json(sc, params, config, summarise_pcl({m}, budget_ns)),
+                                 {"schema", "scenario", "tracker", "runs", "base_seed", "step_ns", "frames_refused"}));
+    r.entry["truth_frames"] = truth_match_json(score->match);
+    r.entry["target_tracks"] = m.target_tracks;
+    r.entry["confirmed_tracks"] = m.confirmed_tracks;
+    r.scored = truth_match_text(score->match) + "\n  association accuracy " +
+               fmt("%.4f", m.association_accuracy) + " (" + std::to_string(m.assoc_correct) + " of " +
+               std::to_string(m.assoc_frames) + " frames), coverage after confirmation " + fmt("%.4f", m.coverage) +
+               " (" + std::to_string(m.covered_frames) + " of " + std::to_string(m.coverage_frames) + ")\n  " +
+               "confirmed tracks " + std::to_string(m.confirmed_tracks) + ": on the target " +
+               std::to_string(m.target_tracks) + ", false " + std::to_string(m.false_tracks) + "; Rb RMSE " +
+               fmt("%.3f", m.rb_rmse_m) + " m, dRb RMSE " + fmt("%.3f", m.drb_rmse_mps) +
+               " m/s over " + std::to_string(m.rmse_frames) + " frames; first confirmation at " +
+               fmt("%g", m.time_to_confirm_s) + " s";
+  }
   r.entry["sensor"] = pcl_scenario_json(sc);
   r.entry["tracker"] = pcl_tracker_json(params, policies);
   r.entry["confirmed_track_rows"] = rows;
@@ -140,7 +206,7 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
 }
 
 OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& scenario_name, std::uint64_t budget_ns,
-                          const std::filesystem::path& dir) {
+                          const std::filesystem::path& dir, const ReplayTruth* truth) {
   const UwScenarioConfig sc = uw_config_by_name(scenario_name);
   const UnderwaterTrackerParams params = uw_params_for(sc);
   const UwRunOutput out = run_uw_stream(std::move(bytes), params, budget_ns);
@@ -162,6 +228,26 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
     predict_only += f.predict_only ? 1 : 0;
   }
   write_uw_track_csv(r.tracks_csv, out.frames, time_s);
+  if (truth != nullptr) {
+    const UwReplayScore score = score_uw_replay(out, truth->uw);
+    const UwRunMetrics& m = score.metrics;
+    UwMonteCarloConfig config;
+    config.runs = 1;
+    config.budget_ns = budget_ns;
+    r.entry.update(metric_fields(uw_summary_json(sc, params, config, summarise_uw({m}, budget_ns)),
+                                 {"schema", "scenario", "tracker", "runs", "seeds", "per_step", "timing_ns",
+                                  "frames_refused", "depth_reflections"}));
+    r.entry["truth_frames"] = truth_match_json(score.match);
+    r.entry["scored_frames"] = m.scored_frames;
+    r.entry["init_frame"] = m.init_frame;
+    r.scored = truth_match_text(score.match) + "\n  3D RMSE " + fmt("%.3f", m.rmse_3d_m) + " m, horizontal " +
+               fmt("%.3f", m.rmse_h_m) + " m, depth " + fmt("%.3f", m.rmse_depth_m) + " m, 3D peak " +
+               fmt("%.3f", m.peak_3d_m) + " m, position NEES " + fmt("%.3f", m.nees) + " (3 dof) over " +
+               std::to_string(m.scored_frames) + " frames after the fix\n  sound-speed error mean " +
+               fmt("%.3f", m.c_err_mean_mps) + " m/s, std " + fmt("%.3f", m.c_err_std_mps) + " m/s; arrivals " +
+               std::to_string(m.arrivals) + ": true outliers " + std::to_string(m.outliers) + ", of which gated " +
+               std::to_string(m.outliers_gated) + "; good arrivals gated " + std::to_string(m.good_gated);
+  }
   r.entry["sensor"] = uw_scenario_json(sc);
   r.entry["tracker"] = uw_params_json(params);
   r.entry["frames_with_estimate"] = reported;
@@ -176,7 +262,7 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
 /// `replay --stream` of a PCL or sonar stream: its one tracker through the
 /// same board loop, with the sensor parameters of a scenario of its kind.
 int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<std::uint8_t> bytes,
-                      std::size_t frame_count, const std::string& source) {
+                      std::size_t frame_count, const std::string& source, const ReplayTruth* truth) {
   const std::string kind_name = sensor_kind_name(kind);
   check_filter_fits(o.filter, kind,
                     source + ": its " + std::to_string(frame_count) + " frames are " + kind_name + " frames");
@@ -193,8 +279,8 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   const std::string filter(kind == hal::FrameKind::kPcl ? kPclFilterName : kSonarFilterName);
-  OtherKindResult r = kind == hal::FrameKind::kPcl ? replay_pcl(std::move(bytes), scenario, budget_ns, dir)
-                                                   : replay_uw(std::move(bytes), scenario, budget_ns, dir);
+  OtherKindResult r = kind == hal::FrameKind::kPcl ? replay_pcl(std::move(bytes), scenario, budget_ns, dir, truth)
+                                                   : replay_uw(std::move(bytes), scenario, budget_ns, dir, truth);
   const StepTiming timing = summarise_step_times(r.step_ns, budget_ns);
   const std::string sensor_scenario = r.entry["sensor"]["name"].get<std::string>();
 
@@ -209,7 +295,8 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   entry["status_counts"] = status_counts_json(r.stats);
   entry["step_ns"] = step_ns_json(timing);
   entry["tracks_csv"] = r.tracks_csv.string();
-  entry["scored"] = false;  // --truth scoring of PCL and sonar replays is not implemented
+  entry["scored"] = truth != nullptr;
+  entry["truth"] = o.truth;
   merge_summary_file(dir / "summary.json", "replay", filter, entry);
 
   std::printf("replay %s: %s stream, %s tracker (%s) with the sensor parameters of %s%s\n", source.c_str(),
@@ -218,9 +305,70 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   print_status_counts(r.stats);
   std::printf("%s\n", r.counts.c_str());
   print_timing(stdout, "replay " + source, timing);
-  std::printf("not scored (no --truth for %s streams). wrote %s, %s\n", kind_name.c_str(), r.tracks_csv.c_str(),
-              (dir / "summary.json").c_str());
+  if (truth != nullptr) {
+    std::printf("scored against %s: %s\n", o.truth.c_str(), r.scored.c_str());
+  } else {
+    std::printf("not scored (no --truth). ");
+  }
+  std::printf("wrote %s, %s\n", r.tracks_csv.c_str(), (dir / "summary.json").c_str());
   return 0;
+}
+
+/// The truth CSV at `path`, which must be of the stream's kind (told by its
+/// columns, csv/sensor_truth_csv.hpp): a radar truth cannot score PCL
+/// tracks, nor a PCL truth sonar estimates.
+ReplayTruth read_replay_truth(const std::string& path, hal::FrameKind stream_kind, const std::string& source) {
+  ReplayTruth t;
+  t.kind = truth_csv_kind(path);
+  if (t.kind != stream_kind) {
+    static const char* const kColumns[] = {"time_s,x_m,y_m", "rb_m,drb_mps", "c_mps"};
+    const auto columns = [](hal::FrameKind k) {
+      return std::string(k == hal::FrameKind::kRadar ? kColumns[0] : k == hal::FrameKind::kPcl ? kColumns[1] : kColumns[2]);
+    };
+    throw std::invalid_argument("--truth " + path + " is a " + sensor_kind_name(t.kind) + " truth (by its columns" +
+                                (t.kind == hal::FrameKind::kRadar ? ", without " + columns(hal::FrameKind::kPcl) +
+                                                                        " or " + columns(hal::FrameKind::kSonar)
+                                                                  : std::string(" ") + columns(t.kind)) +
+                                "); " + source + " holds " + sensor_kind_name(stream_kind) +
+                                " frames: give the truth CSV `kestrel-sim generate` wrote beside that stream");
+  }
+  switch (t.kind) {
+    case hal::FrameKind::kPcl:
+      t.pcl = read_pcl_truth_csv(path);
+      for (const PclTruthRow& r : t.pcl) t.times_s.push_back(r.truth.t_s);
+      break;
+    case hal::FrameKind::kSonar:
+      t.uw = read_uw_truth_csv(path);
+      for (const UwTruthRow& r : t.uw) t.times_s.push_back(r.truth.t_s);
+      break;
+    default:
+      t.radar = read_truth_csv(std::filesystem::path(path));
+      for (const TruthSample& r : t.radar) t.times_s.push_back(r.t_s);
+      break;
+  }
+  return t;
+}
+
+/// A truth none of whose times is a frame time would score nothing: an
+/// error naming both spans, not a run with every figure empty.
+void check_truth_overlap(const ReplayTruth& truth, const std::vector<MeasurementFrame>& frames,
+                         const std::string& truth_path, const std::string& source) {
+  std::vector<double> frame_times;
+  for (const MeasurementFrame& f : frames) frame_times.push_back(f.t_s);
+  if (count_truth_times(frame_times, truth.times_s) > 0) return;
+  const auto span = [](const std::vector<double>& t) {
+    double lo = std::nan(""), hi = std::nan("");
+    for (const double v : t) {
+      if (!std::isfinite(v)) continue;
+      lo = std::isfinite(lo) ? std::min(lo, v) : v;
+      hi = std::isfinite(hi) ? std::max(hi, v) : v;
+    }
+    return std::isfinite(lo) ? fmt("%.6f", lo) + " .. " + fmt("%.6f", hi) + " s" : std::string("none");
+  };
+  throw std::invalid_argument("--truth " + truth_path + ": no frame of " + source +
+                              " is at a time of the truth (to the microsecond): frames " + span(frame_times) +
+                              ", truth " + span(truth.times_s) + " (" + std::to_string(truth.times_s.size()) +
+                              " rows); nothing could be scored");
 }
 
 }  // namespace
@@ -277,13 +425,9 @@ int cmd_replay(const ReplayOptions& o) {
   const hal::FrameKind kind = kinds.pcl > 0     ? hal::FrameKind::kPcl
                               : kinds.sonar > 0 ? hal::FrameKind::kSonar
                                                 : hal::FrameKind::kRadar;
-  if (kind != hal::FrameKind::kRadar && !o.truth.empty()) {
-    throw std::invalid_argument(std::string("--truth: scoring a replay of ") + sensor_kind_name(kind) +
-                                " frames is not implemented; replay " + source +
-                                " without it (tracks and status counts), or score the scenario with `kestrel-sim run`");
-  }
-  const std::vector<TruthSample> truth =
-      o.truth.empty() ? std::vector<TruthSample>{} : read_truth_csv(std::filesystem::path(o.truth));
+  const std::optional<ReplayTruth> replay_truth =
+      o.truth.empty() ? std::nullopt : std::optional<ReplayTruth>(read_replay_truth(o.truth, kind, source));
+  const std::vector<TruthSample> truth = replay_truth ? replay_truth->radar : std::vector<TruthSample>{};
   if (frames.size() == skipped) {
     // Not malformed (a bad truth CSV above is still an error), but nothing
     // would be replayed: a script must not take it for a run. Stop before
@@ -294,7 +438,9 @@ int cmd_replay(const ReplayOptions& o) {
   }
 
   if (kind != hal::FrameKind::kRadar) {
-    return replay_other_kind(o, kind, std::move(bytes), frames.size() - skipped, source);
+    if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
+    return replay_other_kind(o, kind, std::move(bytes), frames.size() - skipped, source,
+                             replay_truth ? &*replay_truth : nullptr);
   }
   if (!o.scenario.empty()) {
     throw std::invalid_argument("--scenario " + o.scenario + ": " + source +
@@ -302,6 +448,7 @@ int cmd_replay(const ReplayOptions& o) {
                                 "chooses the sensor parameters of a PCL or sonar stream)");
   }
   check_filter_fits(o.filter, kind, source + ": its " + std::to_string(frames.size() - skipped) + " frames are radar frames");
+  if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
   const FilterEntry& filter = find_filter(o.filter.filter);
 
   FilterOptions options = o.filter.options;

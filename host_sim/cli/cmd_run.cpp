@@ -58,9 +58,33 @@ void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::st
   if (kind != hal::FrameKind::kRadar && !f.radar_only_given.empty()) {
     throw std::invalid_argument(what + "; " + join_names(f.radar_only_given) +
                                 " set the radar filters and do not apply (the " + kind_name +
-                                " tracker's own options are on `kestrel-sim " +
-                                (kind == hal::FrameKind::kPcl ? "pcl" : "uw") + "`)");
+                                " tracker's keys: `run --set` / `--config`, `list --settings`; its other options: "
+                                "`kestrel-sim " + (kind == hal::FrameKind::kPcl ? "pcl" : "uw") + "`)");
   }
+}
+
+namespace {
+/// run's options as `pcl`'s or `uw`'s (their fields share the names).
+template <class Options>
+Options sensor_options(const RunOptions& o) {
+  Options s;
+  s.scenario = o.scenario;
+  s.runs = o.runs;
+  s.seed = o.seed;
+  s.jobs = o.jobs;
+  s.out = o.out;
+  s.plots = o.plots;
+  s.budget_us = o.filter.budget_us;
+  s.config = o.filter.config;
+  s.sets = o.filter.sets;
+  return s;
+}
+}  // namespace
+
+int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind) {
+  if (kind == hal::FrameKind::kPcl) return cmd_pcl(sensor_options<PclOptions>(o));
+  if (kind == hal::FrameKind::kSonar) return cmd_uw(sensor_options<UwOptions>(o));
+  throw std::invalid_argument("scenario '" + o.scenario + "' is a radar scenario: `run` runs it with a radar filter");
 }
 
 int cmd_run(const RunOptions& o) {
@@ -68,27 +92,7 @@ int cmd_run(const RunOptions& o) {
   if (kind.has_value() && *kind != hal::FrameKind::kRadar) {
     check_filter_fits(o.filter, *kind,
                       "scenario '" + o.scenario + "' is a " + sensor_kind_name(*kind) + " scenario");
-    // The subcommands' own Monte Carlo, files and printout, at run's options.
-    if (*kind == hal::FrameKind::kPcl) {
-      PclOptions p;
-      p.scenario = o.scenario;
-      p.runs = o.runs;
-      p.seed = o.seed;
-      p.jobs = o.jobs;
-      p.out = o.out;
-      p.plots = o.plots;
-      p.budget_us = o.filter.budget_us;
-      return cmd_pcl(p);
-    }
-    UwOptions u;
-    u.scenario = o.scenario;
-    u.runs = o.runs;
-    u.seed = o.seed;
-    u.jobs = o.jobs;
-    u.out = o.out;
-    u.plots = o.plots;
-    u.budget_us = o.filter.budget_us;
-    return cmd_uw(u);
+    return run_sensor_scenario(o, *kind);
   }
   if (kind.has_value()) check_filter_fits(o.filter, *kind, "scenario '" + o.scenario + "' is a radar scenario");
   const MonteCarloConfig config = config_from(o.filter, o.runs, o.seed, o.jobs);

@@ -12,8 +12,6 @@
 #include <vector>
 
 #include "cli/cmd_montecarlo.hpp"
-#include "cli/cmd_pcl.hpp"
-#include "cli/cmd_uw.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
 #include "plots/plot_runner.hpp"
@@ -89,6 +87,20 @@ std::vector<std::filesystem::path> fresh(const std::filesystem::path& root,
   return out;
 }
 
+/// The pcl or uw part as the `run` a user would type for it.
+RunOptions sensor_run(const SuiteOptions& o, const std::string& scenario, unsigned jobs,
+                      const std::filesystem::path& root) {
+  RunOptions r;
+  r.scenario = scenario;
+  r.runs = o.runs;
+  r.seed = o.seed;
+  r.jobs = jobs;
+  r.out = (root / scenario).string();
+  r.plots = o.plots;
+  r.filter.budget_us = o.budget_us;
+  return r;
+}
+
 }  // namespace
 
 int cmd_suite(const SuiteOptions& o) {
@@ -153,26 +165,18 @@ int cmd_suite(const SuiteOptions& o) {
 
   if (wants(o, "pcl")) {
     banner("PCL-002, paper 002's passive-radar tracker");
-    PclOptions pcl;
-    pcl.runs = o.runs;
-    pcl.seed = o.seed;
-    pcl.jobs = jobs;
-    pcl.out = (root / "pcl002").string();
-    pcl.plots = o.plots;
-    if (cmd_pcl(pcl) != 0) throw std::runtime_error("PCL-002 runs failed");
+    if (run_sensor_scenario(sensor_run(o, "pcl002", jobs, root), hal::FrameKind::kPcl) != 0) {
+      throw std::runtime_error("PCL-002 runs failed");
+    }
     report.pcl_dir = "pcl002";
     report.pcl_figures = fresh(root, {"pcl002/pcl_range_doppler.png"}, started);
   }
 
   if (wants(o, "uw")) {
     banner("UW-003, paper 003's underwater tracker");
-    UwOptions uw;
-    uw.runs = o.runs;
-    uw.seed = o.seed;
-    uw.jobs = jobs;
-    uw.out = (root / "uw003").string();
-    uw.plots = o.plots;
-    if (cmd_uw(uw) != 0) throw std::runtime_error("UW-003 runs failed");
+    if (run_sensor_scenario(sensor_run(o, "uw003", jobs, root), hal::FrameKind::kSonar) != 0) {
+      throw std::runtime_error("UW-003 runs failed");
+    }
     report.uw_dir = "uw003";
     report.uw_figures =
         fresh(root, {"uw003/uw_track.png", "uw003/uw_error.png", "uw003/uw_sound_speed.png"}, started);

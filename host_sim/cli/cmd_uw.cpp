@@ -11,6 +11,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/commands.hpp"
+#include "filters/sensor_settings.hpp"
 #include "metrics/uw_metrics.hpp"
 #include "report/uw_files.hpp"
 
@@ -39,6 +41,8 @@ void print_ci(const char* name, const MeanCi& m, const char* unit) {
 
 UnderwaterTrackerParams params_from(const UwOptions& o, const UwScenarioConfig& scenario) {
   UnderwaterTrackerParams p = uw_params_for(scenario);
+  // --config, then --set, then the options of their own.
+  apply_uw_settings(read_settings(o.config, o.sets), p);
   if (o.gate_k) {
     if (!(*o.gate_k > 0.0)) throw std::invalid_argument("--gate-k must be positive");
     p.gate_k_sigma = *o.gate_k;
@@ -89,7 +93,9 @@ int run_single(const UwOptions& o) {
   write_uw_runs_csv(dir / "uw_runs.csv", mc.runs);
   write_uw_steps_csv(dir / "uw_steps.csv", s);
   write_uw_run_csvs(dir, mc.first_run, mc.first_output);
-  write_uw_json(dir / "uw_summary.json", uw_summary_json(scenario, params, config, s));
+  nlohmann::json summary = uw_summary_json(scenario, params, config, s);
+  summary["parameters"] = uw_parameters(params);  // every key, as the run used it
+  write_uw_json(dir / "uw_summary.json", summary);
   const bool plotted =
       o.plots && plot_uw(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
 
@@ -198,6 +204,10 @@ CLI::App* add_uw_command(CLI::App& app, UwOptions& o) {
   cmd->add_flag("!--no-plots", o.plots, "Do not run the plot script");
   cmd->add_flag("--study", o.study, "Every variant with k = 2, k = 3 and no gate; writes uw_study.md");
   cmd->add_option("--budget-us", o.budget_us, "Step budget for overrun counting, us")->capture_default_str();
+  cmd->add_option("--config", o.config,
+                  "JSON file of underwater tracker parameters by key (`list --settings`, docs/parameters.md)");
+  cmd->add_option("--set", o.sets, "KEY=VALUE, repeatable: one underwater tracker parameter; wins over --config, "
+                                   "loses to the parameter's own option (--gate-k, ...)");
   cmd->add_option("--gate-k", o.gate_k, "Per-channel gate multiplier k (default 2, the paper's)");
   cmd->add_flag("--no-gate", o.no_gate, "Per-channel gate off");
   cmd->add_flag("--ellipsoidal", o.ellipsoidal, "Ellipsoidal gate on (after the per-channel gate)");

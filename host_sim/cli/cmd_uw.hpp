@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -29,6 +30,10 @@ struct UwOptions {
   bool plots = true;
   bool study = false;
   double budget_us = 1000.0;
+  /// --config FILE and --set KEY=VALUE: the tracker's keys
+  /// (filters/sensor_settings.hpp), laid under the options of their own.
+  std::string config;
+  std::vector<std::string> sets;
   // Tracker overrides (unset = UnderwaterTrackerParams default).
   std::optional<double> gate_k;
   bool no_gate = false;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "filters/filter_registry.hpp"
+#include "filters/settings.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -40,6 +41,10 @@ void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::st
 /// a flag wins over --set, which wins over --config. Throws
 /// std::invalid_argument or std::runtime_error for a bad file, key or value.
 void resolve_settings(FilterChoice& f, const std::vector<std::string>& sets);
+
+/// The settings of --config FILE (if not empty) and then of each --set, in
+/// order (filters/settings.hpp). Throws as read_config_file and parse_setting.
+std::vector<Setting> read_settings(const std::string& config, const std::vector<std::string>& sets);
 
 /// The registries; with `settings`, the parameter keys instead.
 int cmd_list(bool settings);
@@ -72,6 +77,13 @@ struct RunOptions {
   Cat062Output asterix_out; ///< CAT062 of run 0's reports (the run of the track CSV).
 };
 int cmd_run(const RunOptions& o);
+
+/// `run` of a PCL or sonar scenario (`kind`): the Monte Carlo, files and
+/// printout of `pcl` / `uw` with run's scenario, runs, seed, jobs, out,
+/// plots, budget and --config/--set (the keys of filters/sensor_settings.hpp).
+/// The one place run's options become PclOptions / UwOptions; suite's pcl
+/// and uw parts come through it too.
+int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind);
 
 /// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).
 void print_cat062_written(const std::string& path, const StreamRunResult& r);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <exception>
 #include <initializer_list>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "cli/cmd_uw.hpp"
 #include "cli/commands.hpp"
 #include "kestrel/version.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace {
 
@@ -208,9 +210,19 @@ int main(int argc, char** argv) {
 
   // What a PCL or sonar run must refuse rather than ignore (check_filter_fits).
   run.filter.filter_given = run_cmd->count("--filter") > 0;
+  // --config and --set take the PCL or sonar tracker's keys on such a run.
   run.filter.radar_only_given =
-      given_options(run_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--config",
-                              "--set", "--asterix-out", "--sac", "--sic"});
+      given_options(run_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm",
+                              "--asterix-out", "--sac", "--sic"});
+  const auto is_radar = [](const std::string& scenario) {
+    const std::optional<kestrel::hal::FrameKind> kind = kestrel::sim::scenario_kind(scenario);
+    return !kind.has_value() || *kind == kestrel::hal::FrameKind::kRadar;
+  };
+  const bool run_is_radar = is_radar(run.scenario);
+  const bool timing_is_radar = is_radar(timing.scenario);
+  timing.filter.filter_given = timing_cmd->count("--filter") > 0;
+  timing.filter.radar_only_given =
+      given_options(timing_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm"});
   replay.filter.filter_given = replay_cmd->count("--filter") > 0;
   replay.filter.radar_only_given = given_options(
       replay_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--config", "--set",
@@ -223,7 +235,10 @@ int main(int argc, char** argv) {
     }
     // --config, then --set, under the options of their own (cli/settings_options.cpp)
     // (sweep resolves its own: one of its --set is the swept parameter).
-    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) resolve_settings(*f, f->sets);
+    // A PCL or sonar run or timing reads its tracker's own keys.
+    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) {
+      if ((f != &run.filter || run_is_radar) && (f != &timing.filter || timing_is_radar)) resolve_settings(*f, f->sets);
+    }
     if (app.got_subcommand("list")) return cmd_list(list_settings);
     if (app.got_subcommand(generate)) return cmd_generate(gen);
     if (app.got_subcommand(run_cmd)) return cmd_run(run);

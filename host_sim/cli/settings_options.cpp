@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// --config and --set of the commands that run a filter (cli/commands.hpp).
+// --config and --set of the commands that run a filter or tracker (cli/commands.hpp).
 #include <vector>
 
 #include "cli/commands.hpp"
@@ -8,9 +8,7 @@
 namespace kestrel::sim::cli {
 
 void resolve_settings(FilterChoice& f, const std::vector<std::string>& sets) {
-  std::vector<Setting> settings;
-  if (!f.config.empty()) settings = read_config_file(f.config);
-  for (const std::string& s : sets) settings.push_back(parse_setting(s, "--set"));
+  const std::vector<Setting> settings = read_settings(f.config, sets);
   if (settings.empty()) return;
   for (const Setting& s : settings) f.board_gate_set = f.board_gate_set || s.key == "board_gate";
   // CLI11 has already written the flags into f.options: start again from
@@ -24,6 +22,13 @@ void resolve_settings(FilterChoice& f, const std::vector<std::string>& sets) {
   if (flags.robust_gate_factor.has_value()) o.robust_gate_factor = flags.robust_gate_factor;
   o.imm.insert(o.imm.end(), flags.imm.begin(), flags.imm.end());
   f.options = o;
+}
+
+std::vector<Setting> read_settings(const std::string& config, const std::vector<std::string>& sets) {
+  std::vector<Setting> settings;
+  if (!config.empty()) settings = read_config_file(config);
+  for (const std::string& s : sets) settings.push_back(parse_setting(s, "--set"));
+  return settings;
 }
 
 }  // namespace kestrel::sim::cli

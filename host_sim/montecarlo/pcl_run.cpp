@@ -60,7 +60,7 @@ class TargetIndexByContent {
 
 template <std::size_t kTracks, std::size_t kCandidates, template <class, std::size_t, std::size_t> class Associator,
           template <class> class Manager>
-PclRunOutput run_typed(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+PclRunOutput run_typed(std::vector<std::uint8_t> stream, const PclTargetLocator& target_index_of,
                        const PclTrackerParams& params, std::uint64_t budget_ns) {
   using Tracker = PclTracker<PclKf<double>, kTracks, kCandidates, Associator, Manager>;
   using Report = typename Tracker::Report;
@@ -73,9 +73,8 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const std::vector<PclFr
       std::make_unique<Tracker>(make_pcl_tracker<double, kTracks, kCandidates, Associator, Manager>(params));
   // Every poll that does not return kNoData consumes at least one byte.
   const std::size_t max_polls = stream.size() + 1;
-  const TargetIndexByContent target_index_of(reference);
-  // Room for every track in every frame: a replay has no reference frames
-  // to count, so count the stream's frames (a sink too small drops reports).
+  // Room for every track in every frame: count the stream's frames (a sink
+  // too small drops reports).
   std::size_t frames_in_stream = 0;
   {
     host::StreamFileFeed counter(stream);
@@ -84,7 +83,7 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const std::vector<PclFr
   }
   host::StreamFileFeed feed(std::move(stream));
   host::SteadyClock clock;
-  Sink sink(std::max(reference.size(), frames_in_stream) * kTracks);
+  Sink sink(std::max<std::size_t>(frames_in_stream, 1) * kTracks);
   hal::PclAdapterConfig adapter_config;
   adapter_config.carrier_hz = params.carrier_hz;
   const Adapter adapter(tracker.get(), adapter_config);
@@ -184,7 +183,7 @@ PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario) {
 namespace {
 
 template <std::size_t kTracks, std::size_t kCandidates, template <class, std::size_t, std::size_t> class Associator>
-PclRunOutput run_with_manager(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+PclRunOutput run_with_manager(std::vector<std::uint8_t> stream, const PclTargetLocator& reference,
                               const PclTrackerParams& params, ManagerChoice manager, std::uint64_t budget_ns) {
   if (manager == ManagerChoice::kScore)
     return run_typed<kTracks, kCandidates, Associator, SequentialLlr>(std::move(stream), reference, params, budget_ns);
@@ -192,7 +191,7 @@ PclRunOutput run_with_manager(std::vector<std::uint8_t> stream, const std::vecto
 }
 
 template <std::size_t kTracks, std::size_t kCandidates>
-PclRunOutput run_composed(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+PclRunOutput run_composed(std::vector<std::uint8_t> stream, const PclTargetLocator& reference,
                           const PclTrackerParams& params, const TrackerPolicies& policies, std::uint64_t budget_ns) {
   switch (policies.associator) {
     case AssociatorChoice::kGlobalNearestNeighbour:
@@ -211,6 +210,14 @@ PclRunOutput run_composed(std::vector<std::uint8_t> stream, const std::vector<Pc
 }  // namespace
 
 PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const TrackerPolicies& policies, std::uint64_t budget_ns) {
+  const TargetIndexByContent by_content(reference);
+  return run_pcl_stream(std::move(stream), PclTargetLocator(std::cref(by_content)), scenario, params, policies,
+                        budget_ns);
+}
+
+PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const PclTargetLocator& reference,
                             const PclScenarioConfig& scenario, const PclTrackerParams& params,
                             const TrackerPolicies& policies, std::uint64_t budget_ns) {
   if (scenario.scan_capacity == 32) {

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "kestrel/hal/runner.hpp"
@@ -74,6 +75,16 @@ PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenari
 /// found by the frame's content, so frames dropped, repeated or re-timed
 /// keep it.
 PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
+                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const TrackerPolicies& policies, std::uint64_t budget_ns);
+
+/// Names the target's candidate in a frame as it reached the tracker: its
+/// index in frame.pcl, or -1 when the frame holds none or it is unknown.
+using PclTargetLocator = std::function<int(const hal::Frame&)>;
+
+/// The same with the target's candidate named by `locate` (a replay finds
+/// it from its truth CSV, see metrics/replay_scoring.hpp).
+PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const PclTargetLocator& locate,
                             const PclScenarioConfig& scenario, const PclTrackerParams& params,
                             const TrackerPolicies& policies, std::uint64_t budget_ns);
 

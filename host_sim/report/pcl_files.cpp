@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "csv/sensor_truth_csv.hpp"
 #include "kestrel/models/measurement/bistatic_range_rate.hpp"
 
 #ifndef KESTREL_SIM_PLOT_SCRIPT
@@ -75,14 +76,8 @@ void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfi
                         const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tol) {
   const double lambda = pcl_lambda_m(scenario);
   const std::size_t n = std::min(run.frames.size(), out.frames.size());
-  {
-    std::ofstream f = open_out(dir / "pcl_truth.csv");
-    f << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,rb_m,drb_mps,fd_hz\n";
-    for (const PclTruth& t : run.truth) {
-      f << t.t_s << ',' << t.x_m << ',' << t.y_m << ',' << t.z_m << ',' << t.vx_mps << ',' << t.vy_mps << ','
-        << t.vz_mps << ',' << t.rb_m << ',' << t.drb_mps << ',' << t.fd_hz << '\n';
-    }
-  }
+  // The truth `generate` writes beside a stream: `replay --truth` takes either.
+  write_pcl_truth_csv(dir / "pcl_truth.csv", run);
   {
     std::ofstream f = open_out(dir / "pcl_candidates.csv");
     f << "time_s,index,rb_m,fd_hz,drb_mps,snr_db,is_target,chosen_by_track\n";
@@ -120,7 +115,7 @@ void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<P
     for (const PclTrackRow& r : frames[k].tracks) {
       // Without truth there is nothing to be on: the cell stays empty.
       std::string on;
-      if (truth != nullptr && k < truth->size()) {
+      if (truth != nullptr && k < truth->size() && std::isfinite((*truth)[k].rb_m)) {
         const PclTruth& t = (*truth)[k];
         on = std::abs(r.rb_m - t.rb_m) <= tol.rb_m && std::abs(r.drb_mps - t.drb_mps) <= tol.drb_mps ? "1" : "0";
       }

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The files `kestrel-sim pcl` writes into its output directory:
 //   pcl_runs.csv        one row per Monte Carlo run (the per-run figures);
-//   pcl_truth.csv       run 0: the drone (x, y, z, velocity) and its Rb, dRb, fD;
+//   pcl_truth.csv       run 0: the drone (x, y, z, velocity) and its Rb, dRb, fD,
+//                       and the target's detection (csv/sensor_truth_csv.hpp);
 //   pcl_candidates.csv  run 0: every candidate of every frame (Rb, fD, SNR),
 //                       whether it is the target's detection, whether the
 //                       adapter kept it, and the confirmed track that took it;
@@ -32,7 +33,7 @@ void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfi
 /// pcl_tracks.csv alone: every confirmed track of every frame (`pcl` for
 /// run 0, `replay --stream` for a recorded PCL stream). time_s[k] is frame
 /// k's time; with `truth` (frame k's truth at index k), on_target is 0/1,
-/// without it the cell is empty.
+/// without it (or where that truth's rb_m is NaN) the cell is empty.
 void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<PclFrameOutcome>& frames,
                           const std::vector<double>& time_s, double lambda_m, const std::vector<PclTruth>* truth,
                           const PclTolerance& tolerance);

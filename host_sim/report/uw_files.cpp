@@ -7,6 +7,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "csv/sensor_truth_csv.hpp"
+
 #ifndef KESTREL_SIM_PLOT_SCRIPT
 #error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
 #endif
@@ -73,14 +75,8 @@ void write_uw_steps_csv(const std::filesystem::path& path, const UwSummary& s) {
 
 void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& run, const UwRunOutput& out) {
   const std::size_t n = std::min(run.frames.size(), out.frames.size());
-  {
-    std::ofstream f = open_out(dir / "uw_truth.csv");
-    f << "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps\n";
-    for (const UwTruth& t : run.truth) {
-      f << cell(t.t_s) << ',' << cell(t.x_m) << ',' << cell(t.y_m) << ',' << cell(t.z_m) << ',' << cell(t.vx_mps)
-        << ',' << cell(t.vy_mps) << ',' << cell(t.vz_mps) << ',' << cell(t.c_mps) << '\n';
-    }
-  }
+  // The truth `generate` writes beside a stream: `replay --truth` takes either.
+  write_uw_truth_csv(dir / "uw_truth.csv", run);
   {
     std::ofstream f = open_out(dir / "uw_arrivals.csv");
     f << "frame,time_s,beacon,path,true_toa_s,toa_s,wire_toa_ns,outlier,outlier_ms,fused,gated\n";

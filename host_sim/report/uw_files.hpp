@@ -3,7 +3,8 @@
 //   uw_runs.csv       one row per Monte Carlo run (the per-run figures);
 //   uw_steps.csv      per frame over the runs: 3D, horizontal and depth RMSE
 //                     and the RMS sound-speed error, and how many runs scored;
-//   uw_truth.csv      run 0: the target (x, y, depth, velocity) and c;
+//   uw_truth.csv      run 0: the target (x, y, depth, velocity), c, and the
+//                     channels and outliers (csv/sensor_truth_csv.hpp);
 //   uw_arrivals.csv   run 0: every arrival (beacon, path, true and measured
 //                     time, outlier delay) and what the tracker did with it;
 //   uw_track.csv      run 0: the estimate and its sigmas per frame, fused and

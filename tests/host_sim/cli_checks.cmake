@@ -43,8 +43,6 @@ if(CHECK STREQUAL "replay_wrong_kind")
                       --stream ${OUT}/pcl.kstr --scenario uw003)
   expect_replay_error(r3 "--qj, --set set the radar filters and do not apply"
                       --stream ${OUT}/pcl.kstr --qj 5 --set confirm_m=3)
-  expect_replay_error(r4 "--truth: scoring a replay of PCL frames is not implemented"
-                      --stream ${OUT}/pcl.kstr --truth ${OUT}/none.csv)
   # A radar stream with the PCL tracker, and with a PCL scenario.
   execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
   expect_replay_error(r5 "frames are radar frames; filter 'pcl-kf' takes PCL frames" --stream ${OUT}/s1.kstr -f pcl-kf)
@@ -125,6 +123,129 @@ elseif(CHECK STREQUAL "replay_pcl_stream" OR CHECK STREQUAL "replay_sonar_stream
      OR (CHECK STREQUAL "replay_sonar_stream" AND NOT kind STREQUAL "sonar"))
     message(FATAL_ERROR "summary.json says kind ${kind}, sensor ${sensor}")
   endif()
+elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
+  # A generated PCL (sonar) stream replayed with the truth generate wrote
+  # beside it is scored with the kind's metrics, and they are the ones
+  # `pcl` (`uw`) reports for the same seed (one run).
+  if(CHECK STREQUAL "replay_truth_pcl")
+    set(scenario pcl002)
+    set(filter pcl-kf)
+    set(cmd pcl)
+    set(summary_file pcl_summary.json)
+    set(keys association_accuracy coverage_after_confirmation false_confirmed_tracks_per_run rb_rmse_m)
+    set(printed "association accuracy [01]\\.[0-9]+ \\([0-9]+ of [0-9]+ frames\\), coverage after confirmation")
+  else()
+    set(scenario uw003)
+    set(filter uw-ekf)
+    set(cmd uw)
+    set(summary_file uw_summary.json)
+    set(keys rmse_3d_m rmse_h_m rmse_depth_m nees c_err_std_per_run_mps)
+    set(printed "3D RMSE [0-9]+\\.[0-9]+ m, horizontal [0-9.]+ m, depth [0-9.]+ m")
+  endif()
+  generate_stream(${scenario} s)
+  if(NOT EXISTS ${OUT}/s.truth.csv)
+    message(FATAL_ERROR "generate --scenario ${scenario} wrote no s.truth.csv")
+  endif()
+  execute_process(COMMAND ${SIM} replay --stream ${OUT}/s.kstr --truth ${OUT}/s.truth.csv --no-plots --out ${OUT}/replay
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "replay --truth of a ${scenario} stream failed (${rc}):\n${out}${err}")
+  endif()
+  if(NOT out MATCHES "scored against [^\n]*s.truth.csv: (120|50) frames scored, 0 at a time without truth" OR
+     NOT out MATCHES "${printed}")
+    message(FATAL_ERROR "replay --truth did not print the ${scenario} metrics:\n${out}")
+  endif()
+  execute_process(COMMAND ${SIM} ${cmd} --scenario ${scenario} --seed 3 --runs 1 --no-plots --out ${OUT}/run
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${cmd} --seed 3 --runs 1 failed (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/replay/summary.json replay)
+  file(READ ${OUT}/run/${summary_file} run)
+  string(JSON scored GET "${replay}" results replay ${filter} scored)
+  if(NOT scored STREQUAL "ON" AND NOT scored STREQUAL "true")
+    message(FATAL_ERROR "summary.json says scored ${scored}")
+  endif()
+  foreach(key IN LISTS keys)
+    string(JSON got GET "${replay}" results replay ${filter} ${key} mean)
+    string(JSON want GET "${run}" ${key} mean)
+    if(NOT got STREQUAL want)
+      message(FATAL_ERROR "replay's ${key} is ${got}, ${cmd}'s run of the same seed ${want}")
+    endif()
+  endforeach()
+  # pcl's and uw's own run-0 truth is the same file: replay takes it too.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/s.truth.csv ${OUT}/run/${cmd}_truth.csv
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "generate's s.truth.csv differs from ${cmd}'s ${cmd}_truth.csv of the same seed")
+  endif()
+elseif(CHECK STREQUAL "replay_truth_mismatch")
+  # Truth of another kind, or at no frame's time, is an error naming it and
+  # a non-zero exit, with no summary written.
+  generate_stream(pcl002 pcl)
+  generate_stream(uw003 uw)
+  execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
+  expect_replay_error(m1 "--truth [^ ]*uw.truth.csv is a sonar truth \\(by its columns c_mps\\); [^ ]*pcl.kstr holds PCL frames"
+                      --stream ${OUT}/pcl.kstr --truth ${OUT}/uw.truth.csv)
+  expect_replay_error(m2 "--truth [^ ]*s1.truth.csv is a radar truth .*pcl.kstr holds PCL frames"
+                      --stream ${OUT}/pcl.kstr --truth ${OUT}/s1.truth.csv)
+  expect_replay_error(m3 "--truth [^ ]*pcl.truth.csv is a PCL truth .*s1.kstr holds radar frames"
+                      --stream ${OUT}/s1.kstr --truth ${OUT}/pcl.truth.csv)
+  # The sonar truth moved 1000 s later: no frame time meets it.
+  file(STRINGS ${OUT}/uw.truth.csv rows)
+  list(GET rows 0 header)
+  list(GET rows 1 row)
+  string(REGEX REPLACE "^[^,]*," "1000," row "${row}")
+  file(WRITE ${OUT}/late.truth.csv "${header}\n${row}\n")
+  expect_replay_error(m4 "--truth [^ ]*late.truth.csv: no frame of [^ ]*uw.kstr is at a time of the truth .*frames 0.000000 .. 49.000000 s, truth 1000.000000 .. 1000.000000 s"
+                      --stream ${OUT}/uw.kstr --truth ${OUT}/late.truth.csv)
+elseif(CHECK STREQUAL "config_set_sensor")
+  # run of a PCL or sonar scenario takes its tracker's keys from --config
+  # and --set (--set wins over the file) and echoes them into its summary;
+  # an unknown key or a value out of range is refused by name, nothing run.
+  file(WRITE ${OUT}/pcl.json "{\"accel_sigma_mps2\": 2, \"confirm_m\": 4, \"confirm_n\": 6}")
+  execute_process(COMMAND ${SIM} run -s pcl002 --runs 1 --no-plots --config ${OUT}/pcl.json --set confirm_n=5
+                          --out ${OUT}/pcl
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "PCL KF sa 2 m/s\\^2, nn, 4-of-5")
+    message(FATAL_ERROR "run -s pcl002 --config --set failed or did not use them (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/pcl/pcl_summary.json summary)
+  foreach(pair "accel_sigma_mps2=2" "confirm_m=4" "confirm_n=5" "gate_confirmed=0.99")
+    string(REPLACE "=" ";" kv ${pair})
+    list(GET kv 0 key)
+    list(GET kv 1 want)
+    string(JSON got GET ${summary} parameters ${key})
+    if(NOT got EQUAL want)
+      message(FATAL_ERROR "pcl_summary.json parameters.${key} is ${got}, expected ${want}")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${SIM} run -s uw003 --runs 1 --no-plots --set per_channel_gate=false --set gate_k_sigma=3
+                          --out ${OUT}/uw
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "UW EKF, no gate,")
+    message(FATAL_ERROR "run -s uw003 --set failed or did not use it (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/uw/uw_summary.json summary)
+  string(JSON gate GET ${summary} parameters per_channel_gate)
+  string(JSON k GET ${summary} tracker gate_k_sigma)
+  if(NOT gate EQUAL 0 OR NOT k EQUAL 3)
+    message(FATAL_ERROR "uw_summary.json: per_channel_gate ${gate}, gate_k_sigma ${k}")
+  endif()
+  foreach(bad "pcl002;confirm_m=9;--set confirm_m=9: out of range \\(whole, 1..8\\)"
+              "uw003;qj=5;--set qj=5: unknown key of the underwater tracker")
+    list(GET bad 0 scenario)
+    list(GET bad 1 set)
+    list(GET bad 2 pattern)
+    execute_process(COMMAND ${SIM} run -s ${scenario} --runs 1 --no-plots --set ${set} --out ${OUT}/bad
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(rc EQUAL 0 OR NOT err MATCHES "${pattern}")
+      message(FATAL_ERROR "run -s ${scenario} --set ${set} was not refused by name (${rc}):\n${out}${err}")
+    endif()
+    if(EXISTS ${OUT}/bad)
+      message(FATAL_ERROR "run -s ${scenario} --set ${set} wrote files")
+    endif()
+  endforeach()
 elseif(CHECK STREQUAL "suite_report")
   # The main job at tiny run counts: every part runs and report.md holds the
   # table of each paper's system.

@@ -74,7 +74,7 @@ SCENARIO("A PCL stream replayed without its reference gives the scenario run's t
     const PclScenarioRun run = generate_pcl(c, 3);
     const PclTrackerParams params = pcl_params_for(c);
     const PclRunOutput scenario_run = run_pcl(run, c, params, TrackerPolicies{}, 1'000'000'000);
-    const PclRunOutput replay = run_pcl_stream(encode_pcl_stream(run), {}, c, params, TrackerPolicies{}, 1'000'000'000);
+    const PclRunOutput replay = run_pcl_stream(encode_pcl_stream(run), std::vector<PclFrameRecord>{}, c, params, TrackerPolicies{}, 1'000'000'000);
     THEN("every frame has the same confirmed tracks and the frame's wire time") {
       REQUIRE(replay.frames.size() == run.frames.size());
       std::size_t rows = 0;

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// The PCL and underwater trackers' parameters by name: the keys `--set
+// KEY=VALUE` and `--config FILE` take on `run -s pcl002|uw003...`, `pcl`
+// and `uw` (docs/parameters.md, "PCL tracker" and "Underwater tracker").
+// As for the radar keys (filters/settings.hpp), one table per tracker maps
+// each key to its field, range and meaning, so the parser, the range check,
+// the echo into the summary and `list --settings` cannot drift apart.
+#pragma once
+
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "filters/settings.hpp"
+#include "kestrel/tracking/pcl_tracker.hpp"
+#include "kestrel/tracking/underwater_tracker.hpp"
+
+namespace kestrel::sim {
+
+/// Applies the settings to `params` in order (a later one wins). Throws
+/// std::invalid_argument naming the key and its origin for an unknown key,
+/// a value outside its range or confirm_m > confirm_n; `params` is then
+/// unchanged.
+void apply_pcl_settings(std::span<const Setting> settings, PclTrackerParams& params);
+void apply_uw_settings(std::span<const Setting> settings, UnderwaterTrackerParams& params);
+
+/// Every key with its value in `params`, for the summary's "parameters".
+std::map<std::string, double> pcl_parameters(const PclTrackerParams& params);
+std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& params);
+
+/// Every key, its default (for the keys a scenario sets, "the scenario's"
+/// with pcl002's / uw003's value), range and meaning, in docs order.
+std::vector<SettingInfo> pcl_setting_table();
+std::vector<SettingInfo> uw_setting_table();
+
+}  // namespace kestrel::sim

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: Apache-2.0
+// The PCL and underwater trackers' keys (filters/sensor_settings.hpp): --set
+// and --config reach the tracker parameters, a bad key or value is refused
+// naming it and changes nothing, the summary echo names every key, and
+// docs/parameters.md gives every key with the default the code has.
+#include <catch2/catch.hpp>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "filters/sensor_settings.hpp"
+#include "montecarlo/pcl_run.hpp"
+#include "montecarlo/uw_run.hpp"
+
+using namespace kestrel;       // NOLINT(google-build-using-namespace)
+using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
+
+namespace {
+std::vector<Setting> sets(const std::vector<std::string>& texts) {
+  std::vector<Setting> s;
+  for (const std::string& t : texts) s.push_back(parse_setting(t, "--set"));
+  return s;
+}
+
+template <class Params, class Apply>
+std::string refusal(const std::vector<std::string>& texts, Params& p, Apply apply) {
+  try {
+    apply(sets(texts), p);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+SCENARIO("PCL tracker keys set PclTrackerParams", "[settings][pcl]") {
+  GIVEN("pcl002's tracker parameters") {
+    const PclTrackerParams base = pcl_params_for(pcl002_config());
+    WHEN("keys of every type are set") {
+      PclTrackerParams p = base;
+      apply_pcl_settings(sets({"accel_sigma_mps2=2.5", "gate_confirmed=0.999", "confirm_m=3", "confirm_n=4",
+                               "max_coast_misses=9", "detection_probability=0.7"}),
+                         p);
+      THEN("each reaches its field and the others keep the scenario's values") {
+        CHECK(p.accel_sigma_mps2 == 2.5);
+        CHECK(p.gate_confirmed == GateProbability::k999);
+        CHECK(p.confirm_m == 3);
+        CHECK(p.confirm_n == 4);
+        CHECK(p.max_coast_misses == 9);
+        CHECK(p.detection_probability == 0.7);
+        CHECK(p.sigma_rb_m == base.sigma_rb_m);
+        CHECK(p.clutter_density == base.clutter_density);
+        CHECK(p.gate_tentative == base.gate_tentative);
+      }
+      THEN("the echo gives every key with the value used") {
+        const auto echo = pcl_parameters(p);
+        CHECK(echo.size() == pcl_setting_table().size());
+        CHECK(echo.at("accel_sigma_mps2") == 2.5);
+        CHECK(echo.at("gate_confirmed") == 0.999);
+        CHECK(echo.at("confirm_n") == 4.0);
+      }
+    }
+    WHEN("a key is unknown, a value out of range, or M exceeds N") {
+      PclTrackerParams p = base;
+      const auto apply = [](const std::vector<Setting>& s, PclTrackerParams& q) { apply_pcl_settings(s, q); };
+      THEN("each is refused by name and nothing changes") {
+        CHECK_THAT(refusal({"accel_sigma_mps2=3", "qj=5"}, p, apply),
+                   Catch::Contains("--set qj=5: unknown key of the PCL tracker (known: sigma_rb_m,"));
+        CHECK_THAT(refusal({"confirm_m=9"}, p, apply), Catch::Contains("--set confirm_m=9: out of range (whole, 1..8)"));
+        CHECK_THAT(refusal({"gate_tentative=0.97"}, p, apply), Catch::Contains("out of range (0.9, 0.95, 0.99"));
+        CHECK_THAT(refusal({"detection_probability=1"}, p, apply), Catch::Contains("out of range (> 0, < 1)"));
+        CHECK_THAT(refusal({"confirm_m=2.5"}, p, apply), Catch::Contains("out of range"));
+        CHECK_THAT(refusal({"confirm_m=7"}, p, apply), Catch::Contains("confirm_m 7 > confirm_n 6"));
+        CHECK(p.accel_sigma_mps2 == base.accel_sigma_mps2);
+        CHECK(p.confirm_m == base.confirm_m);
+      }
+    }
+  }
+}
+
+SCENARIO("Underwater tracker keys set UnderwaterTrackerParams", "[settings][uw]") {
+  GIVEN("uw003's tracker parameters") {
+    const UnderwaterTrackerParams base = uw_params_for(uw003_config());
+    WHEN("a real, a boolean, a gate and a whole key are set") {
+      UnderwaterTrackerParams p = base;
+      apply_uw_settings(sets({"gate_k_sigma=3", "per_channel_gate=false", "ellipsoidal_gate=true",
+                              "ellipsoid_probability=0.95", "reacquire_after_lost_frames=0"}),
+                        p);
+      THEN("each reaches its field") {
+        CHECK(p.gate_k_sigma == 3.0);
+        CHECK_FALSE(p.per_channel_gate);
+        CHECK(p.ellipsoidal_gate);
+        CHECK(p.ellipsoid_probability == GateProbability::k95);
+        CHECK(p.reacquire_after_lost_frames == 0);
+        CHECK(p.seabed_depth_m == base.seabed_depth_m);
+        CHECK(uw_parameters(p).at("per_channel_gate") == 0.0);
+      }
+    }
+    WHEN("a boolean gets 2 or a radar key is given") {
+      UnderwaterTrackerParams p = base;
+      const auto apply = [](const std::vector<Setting>& s, UnderwaterTrackerParams& q) { apply_uw_settings(s, q); };
+      THEN("it is refused by name and nothing changes") {
+        CHECK_THAT(refusal({"gate_k_sigma=3", "project_depth=2"}, p, apply),
+                   Catch::Contains("--set project_depth=2: out of range (false or true)"));
+        CHECK_THAT(refusal({"gate_k=3"}, p, apply), Catch::Contains("unknown key of the underwater tracker"));
+        CHECK(p.gate_k_sigma == base.gate_k_sigma);
+      }
+    }
+  }
+}
+
+SCENARIO("docs/parameters.md gives every PCL and underwater key with its default", "[settings]") {
+  std::ifstream in(KESTREL_DOCS_DIR "/parameters.md");
+  REQUIRE(in);
+  std::stringstream doc;
+  doc << in.rdbuf();
+  for (const auto& table : {pcl_setting_table(), uw_setting_table()}) {
+    for (const SettingInfo& i : table) {
+      INFO(i.key);
+      CHECK(doc.str().find("| `" + i.key + "` | " + i.default_text + " | " + i.range + " |") != std::string::npos);
+    }
+  }
+  THEN("each default that is a number or a boolean is accepted back") {
+    PclTrackerParams p = pcl_params_for(pcl002_config());
+    for (const SettingInfo& i : pcl_setting_table()) {
+      if (i.default_text.find(' ') != std::string::npos) continue;
+      INFO(i.key);
+      CHECK_NOTHROW(apply_pcl_settings(sets({i.key + "=" + i.default_text}), p));
+    }
+    UnderwaterTrackerParams u = uw_params_for(uw003_config());
+    for (const SettingInfo& i : uw_setting_table()) {
+      if (i.default_text.find(' ') != std::string::npos) continue;
+      INFO(i.key);
+      CHECK_NOTHROW(apply_uw_settings(sets({i.key + "=" + i.default_text}), u));
+    }
+  }
+}
