@@ -45,6 +45,13 @@ if(NOT TARGET kestrel_m4f_codegen)
     # GCC's note that passing some Eigen structs by value changed ABI in
     # GCC 7.1: irrelevant when the whole image is built by one compiler.
     -Wno-psabi)
+  # Eigen loops instead of complete unrolling: at -Os a completely unrolled
+  # 6x6 assignment or reduction is straight-line code per instantiation
+  # (docs/footprint.md, "2026-12-03"). Unrolled reductions add in a
+  # pairwise tree and the loops from left to right, so sums of three or more
+  # terms may round differently from the host's (the board's float tests
+  # compare within tolerances, not bits).
+  target_compile_definitions(kestrel_m4f_codegen INTERFACE EIGEN_UNROLLING_LIMIT=0)
 endif()
 
 function(kestrel_m4f_image target)
