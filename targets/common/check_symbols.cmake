@@ -38,7 +38,11 @@ string(REPLACE "\n" ";" lines "${all}")
 set(names "")
 foreach(line IN LISTS lines)
   if(line MATCHES "^[0-9a-fA-F ]* [A-Za-z?] ([^ ]+)$")
-    list(APPEND names "${CMAKE_MATCH_1}")
+    # A function cloned or localised by the optimiser (link-time
+    # optimisation in particular) keeps its name before a suffix such as
+    # .constprop.0, .isra.0, .part.0 or .lto_priv.0: check that name.
+    string(REGEX REPLACE "^([^.]+)\\..*$" "\\1" name "${CMAKE_MATCH_1}")
+    list(APPEND names "${name}")
   endif()
 endforeach()
 

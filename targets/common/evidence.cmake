@@ -71,7 +71,8 @@ endfunction()
 #                                   chain per handler of the vector table
 #                                   (stack_report.py, "Main stack")
 #     [FRAME_BUDGET <bytes>]        -Wstack-usage=<bytes> on every unit of
-#                                   the image and of CI_TARGETS: one frame
+#                                   the image and of CI_TARGETS, and on its
+#                                   link (code made by LTO): one frame
 #                                   over it is a compile error (-Werror of
 #                                   kestrel_firmware_flags)
 #     [CI_TARGETS <target>...]      other targets whose objects are in the
@@ -111,6 +112,8 @@ function(kestrel_board_evidence image)
     foreach(t ${image} ${ev_CI_TARGETS})
       target_compile_options(${t} PRIVATE -Wstack-usage=${ev_FRAME_BUDGET})
     endforeach()
+    # With link-time optimisation the frames are made at the link.
+    target_link_options(${image} PRIVATE -Wstack-usage=${ev_FRAME_BUDGET})
   endif()
 
   set(cmds

@@ -7,8 +7,9 @@
 #   kestrel_m4f_codegen   INTERFACE library: code generation flags for every
 #                         translation unit in the image.
 #   kestrel_m4f_image(<executable>)
-#                         linker script, start-up model, --gc-sections, map
-#                         file, memory-usage print, and the heap guard.
+#                         link-time optimisation, linker script, start-up
+#                         model, --gc-sections, map file, memory-usage
+#                         print, and the heap guard.
 #
 # The heap guard: every allocator entry point of newlib and of the C++
 # runtime is --wrap'ed, and no __wrap_<name> is ever defined. The linker then
@@ -45,10 +46,30 @@ if(NOT TARGET kestrel_m4f_codegen)
     # GCC's note that passing some Eigen structs by value changed ABI in
     # GCC 7.1: irrelevant when the whole image is built by one compiler.
     -Wno-psabi)
+  # Eigen loops instead of complete unrolling: at -Os a completely unrolled
+  # 6x6 assignment or reduction is straight-line code per instantiation
+  # (docs/footprint.md, "2026-12-03"). Unrolled reductions add in a
+  # pairwise tree and the loops from left to right, so sums of three or more
+  # terms may round differently from the host's (the board's float tests
+  # compare within tolerances, not bits).
+  target_compile_definitions(kestrel_m4f_codegen INTERFACE EIGEN_UNROLLING_LIMIT=0)
 endif()
 
 function(kestrel_m4f_image target)
   kestrel_heap_guard(${target} j)
+  # Link-time optimisation in one partition: the sources of <executable>
+  # (and of any library built with -flto, kestrel_hal on this board) are
+  # optimised as one unit, so template code used once is inlined or
+  # dropped and every function not reached from outside becomes local.
+  # Compiling with -flto writes no .su/.ci; code is generated at the link,
+  # which therefore takes the per-function stack usage and call graph
+  # options (written as ltrans0.ltrans.{su,ci} into the object directory,
+  # where stack_report.py reads them) and -Werror (the frame budget's
+  # -Wstack-usage is checked there too, targets/common/evidence.cmake).
+  target_compile_options(${target} PRIVATE -flto)
+  target_link_options(${target} PRIVATE
+    -flto -flto-partition=one -fstack-usage -fcallgraph-info=su -Werror
+    "-dumpdir" "$<TARGET_PROPERTY:${target},BINARY_DIR>/CMakeFiles/${target}.dir/")
   target_link_options(${target} PRIVATE
     -nostartfiles                      # startup.cpp is the whole start-up
     --specs=nano.specs                 # newlib-nano libc and libstdc++

@@ -15,7 +15,6 @@
 // kNonFinite, instead of a wrong value.
 #include "trig_reduction.hpp"
 
-#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -43,15 +42,22 @@ constexpr std::uint32_t kMediumLimitBits = 0x43490f80u;   // 2^7 pi/2: end of th
 
 /// High bits (low 8 cleared) of float(n pi/2), n = 1..32: where x - n pi/2
 /// may cancel so far that a second or third part of pi/2 is needed.
-constexpr std::array<std::uint32_t, 32> make_npio2_hw() {
-  std::array<std::uint32_t, 32> t{};
+/// newlib reads them from a 32-entry table (npio2_hw); here they are the
+/// high bits of the float product n * float(pi/2), which the assertions
+/// below prove equal for every n of the table: the same test without its
+/// 128 bytes.
+constexpr float kPio2 = from_bits(0x3fc90fdbu);  // float(pi/2)
+constexpr std::uint32_t npio2_hw(float fn) { return std::bit_cast<std::uint32_t>(fn * kPio2) & 0xffffff00u; }
+constexpr bool npio2_hw_matches_newlib() {
   for (std::uint32_t n = 1; n <= 32; ++n) {
-    t[n - 1] = std::bit_cast<std::uint32_t>(static_cast<float>(n * 1.57079632679489661923)) & 0xffffff00u;
+    const std::uint32_t newlib =
+        std::bit_cast<std::uint32_t>(static_cast<float>(n * 1.57079632679489661923)) & 0xffffff00u;
+    if (npio2_hw(static_cast<float>(n)) != newlib) return false;
   }
-  return t;
+  return true;
 }
-constexpr std::array<std::uint32_t, 32> kNpio2Hw = make_npio2_hw();
-static_assert(kNpio2Hw[0] == 0x3fc90f00u && kNpio2Hw[1] == 0x40490f00u && kNpio2Hw[31] == 0x42490f00u);
+static_assert(npio2_hw_matches_newlib(), "n * float(pi/2) must give newlib's npio2_hw for n = 1..32");
+static_assert(npio2_hw(1.0f) == 0x3fc90f00u && npio2_hw(2.0f) == 0x40490f00u && npio2_hw(32.0f) == 0x42490f00u);
 
 int biased_exponent(float v) { return static_cast<int>((std::bit_cast<std::uint32_t>(v) >> 23) & 0xffu); }
 
@@ -95,7 +101,7 @@ extern "C" int kestrel_m4f_rem_pio2f(float x, float* y) {
   const auto fn = static_cast<float>(n);
   float r = std::fmaf(-fn, kPio2_1, t);  // exact: n pio2_1 has at most 24 bits
   float w = fn * kPio2_1t;
-  if (n < 32 && (ix & 0xffffff00u) != kNpio2Hw[static_cast<std::uint32_t>(n - 1)]) {
+  if (n < 32 && (ix & 0xffffff00u) != npio2_hw(fn)) {
     y[0] = r - w;  // no cancellation possible
   } else {
     const int j = static_cast<int>(ix >> 23);
