@@ -238,7 +238,7 @@ class ChannelGatedEkf {
         const int m = channel_count(kept);
         if (m == 0) break;
         const Innov set = ekf_.innovation(z, R, kept);
-        if (set.status != Status::kOk) return fail(set.status);
+        KESTREL_TRY_OR(fail, set.status);
         const Scalar threshold = ScalarTraits<Scalar>::from_double(
             chi_square_quantile(m, gate.ellipsoid_probability));
         if (set.d2 <= threshold) break;

@@ -129,7 +129,7 @@ class Ekf {
   [[nodiscard]] Status reset(const State& x, const Cov& P) {
     if (!all_finite(x) || !all_finite(P)) return Status::kNonFinite;
     const Cov Ps = symmetrised(P);
-    if (const Status c = state_status(x, Ps); c != Status::kOk) return c;
+    KESTREL_TRY(state_status(x, Ps));
     x_ = x;
     P_ = Ps;
     invalidate_linearisation();
@@ -310,7 +310,7 @@ class Ekf {
       const auto& lin = factored_linearisation();
       const MeasVec nu = measurement_.residual(z, lin.z_hat);
       if (lin.factor_status == Status::kNonFinite || !all_finite(nu)) return fail(Status::kNonFinite);
-      if (lin.factor_status != Status::kOk) return fail(lin.factor_status);
+      KESTREL_TRY_OR(fail, lin.factor_status);
       if constexpr (kWhitenedSparse) {
         return fold_in_whitened(nu, lin.S, lin.Jw, factor_of(lin));
       } else {
@@ -353,7 +353,7 @@ class Ekf {
       return Status::kOk;
     }
     const KeptChannels k = kept_channels(z, R, keep);
-    if (k.status != Status::kOk) return fail(k.status);
+    KESTREL_TRY_OR(fail, k.status);
     Status s;
     if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
       s = fold_in_sequential(k.nu, k.H, k.R);
@@ -418,7 +418,7 @@ class Ekf {
     Mat<Scalar, kStateDim, kMeasDim> PHt;
     if constexpr (kSparseUpdate) {
       const auto& lin = factored_linearisation();
-      if (lin.factor_status != Status::kOk) return fail(lin.factor_status);
+      KESTREL_TRY_OR(fail, lin.factor_status);
       z_hat = lin.z_hat;
       S = lin.S;
       L = lin.L;
@@ -459,7 +459,7 @@ class Ekf {
     structure::whitened_gain_factored(PHt, L, MeasVec::Zero().eval(), U, unused);
     const State x = x_ + U * w_mean;
     const Cov P = symmetrised(P_ - U * M * U.transpose());
-    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, state_status(x, P));
 
     x_ = x;
     P_ = P;
@@ -500,7 +500,7 @@ class Ekf {
     const State x = x_ + K * nu;
     const Cov A = Cov::Identity() - K * H;
     const Cov P = symmetrised(A * P_ * A.transpose() + K * R * K.transpose());
-    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, state_status(x, P));
 
     x_ = x;
     P_ = P;
@@ -539,7 +539,7 @@ class Ekf {
     structure::whitened_gain_factored(PHt, L, nu, U, w);
     const State x = x_ + U * w;
     const Cov P = structure::symmetric_downdate(P_, U);
-    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, state_status(x, P));
 
     x_ = x;
     P_ = P;
@@ -574,7 +574,7 @@ class Ekf {
     if (!all_finite(lin.J.Hc) || !all_finite(nu) || !all_finite(S)) return fail(Status::kNonFinite);
     WhitenedFactor f;
     auto Jw = lin.J;  // Hw, written by whitened_factor_for()
-    if (const Status c = whitened_factor_for(lin.J, R, f, Jw); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, whitened_factor_for(lin.J, R, f, Jw));
     return fold_in_whitened(nu, S, Jw, f);
   }
 
@@ -607,7 +607,7 @@ class Ekf {
     const Cov P = structure::symmetric_downdate(P_, U);
     const Scalar nis = w.squaredNorm();
     if (!ScalarTraits<Scalar>::is_finite(nis)) return fail(Status::kNonFinite);
-    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, state_status(x, P));
 
     x_ = x;
     P_ = P;
@@ -652,7 +652,7 @@ class Ekf {
     }
     const State x = x_ + dx;
     if (!ScalarTraits<Scalar>::is_finite(nis)) return fail(Status::kNonFinite);
-    if (const Status c = state_status(x, P); c != Status::kOk) return fail(c);
+    KESTREL_TRY_OR(fail, state_status(x, P));
     MeasVec s_diag;  // diag(H P H^T + R) before the update, for diagnostics
     for (int i = 0; i < kMeasDim; ++i) {
       const Eigen::Matrix<Scalar, 1, kStateDim> hP = H.row(i) * P_;
@@ -739,7 +739,7 @@ class Ekf {
 
  private:
   [[nodiscard]] Status commit_prediction(const State& x, const Cov& P) {
-    if (const Status c = state_status(x, P); c != Status::kOk) return c;
+    KESTREL_TRY(state_status(x, P));
     x_ = x;
     P_ = P;
     invalidate_linearisation();

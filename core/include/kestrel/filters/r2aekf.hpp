@@ -305,7 +305,7 @@ class R2Aekf {
     const MeasCov R_prev = measurement_noise();
     const Innov pre = cache_valid_ && (cached_z_.array() == z.array()).all() ? cached_ : ekf_.innovation(z, R_prev);
     cache_valid_ = false;
-    if (pre.status != Status::kOk) return fail(pre.status);
+    KESTREL_TRY_OR(fail, pre.status);
 
     Adaptation a = ad_;
     // Step 2, eq. 8: per-channel normalised innovation; n_c = e_c^2.

@@ -49,7 +49,7 @@ class MultilaterationInitiator {
   [[nodiscard]] Status start(Filter& f, const typename Filter::MeasVec& z, ChannelMask present) {
     using L = typename Filter::Layout;
     fix_ = multilaterate(f.measurement(), z, present, config_.fix);
-    if (fix_.status != Status::kOk) return fix_.status;
+    KESTREL_TRY(fix_.status);
     typename Filter::State x0 = Filter::State::Zero();
     for (int a = 0; a < 3; ++a) x0(L::kPos + a) = fix_.position_m(a);
     x0(L::kC) = config_.fix.sound_speed_mps;
@@ -62,9 +62,8 @@ class MultilaterationInitiator {
       P0(L::kVel + a, L::kVel + a) = sv * sv;
     }
     P0(L::kC, L::kC) = sc * sc;
-    Status s = f.reset(x0, P0);
-    if (s == Status::kOk) s = f.update(z, fix_.inliers);
-    if (s != Status::kOk) return s;
+    KESTREL_TRY(f.reset(x0, P0));
+    KESTREL_TRY(f.update(z, fix_.inliers));
     f.note_refused(present, fix_.rejected);
     return f.constrain();
   }

@@ -160,8 +160,8 @@ class UnderwaterTracker {
     stats_ = UnderwaterStepStats{};
     reported_ = false;
     ChannelFrame frame;
-    if (const Status s = to_channels(scan, frame); s != Status::kOk) return refuse(s);
-    if (const Status s = core_.step(frame); s != Status::kOk) return refuse(s);
+    KESTREL_TRY_OR(refuse, to_channels(scan, frame));
+    KESTREL_TRY_OR(refuse, core_.step(frame));
     const StepStats& cs = core_.last_step();
     const std::span<const Report> r = core_.reports();
     if (r.empty()) return refuse(cs.failure != Status::kOk ? cs.failure : Status::kNotInitialised);
