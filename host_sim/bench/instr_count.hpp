@@ -5,9 +5,8 @@
 // in its own translation unit (instr_count_<family>.cpp), the EKF family's
 // once per scalar: GCC's inlining decisions depend on what else a unit
 // holds, so one case's count must not move when unrelated cases change
-// (adding the sigma-point cases to the EKF's unit moved EKF paths by up to
-// 8 %; a change to the fixed-point code alone moved the double paths by
-// up to 13 %). A board image holds one scalar, as each unit here does.
+// (docs/performance.md, "Commands"). A board image holds one scalar, as
+// each unit here does.
 #pragma once
 
 #if __has_include(<valgrind/callgrind.h>)
