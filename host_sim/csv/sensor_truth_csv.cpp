@@ -43,6 +43,32 @@ double read_time(const CsvReader& csv, std::size_t col, double previous, bool fi
   return t;
 }
 
+/// The time, position and velocity columns of every sensor's truth CSV.
+struct KinematicColumns {
+  explicit KinematicColumns(const CsvReader& csv)
+      : t(csv.require_column("time_s")),
+        x(csv.require_column("x_m")),
+        y(csv.require_column("y_m")),
+        z(csv.require_column("z_m")),
+        vx(csv.require_column("vx_mps")),
+        vy(csv.require_column("vy_mps")),
+        vz(csv.require_column("vz_mps")) {}
+
+  /// The current row's time (after the rows read so far) and kinematics into `truth`.
+  template <class Rows, class Truth>
+  void read(const CsvReader& csv, const Rows& rows, Truth& truth) const {
+    truth.t_s = read_time(csv, t, rows.empty() ? 0.0 : rows.back().truth.t_s, rows.empty());
+    truth.x_m = csv.number(x);
+    truth.y_m = csv.number(y);
+    truth.z_m = csv.number(z);
+    truth.vx_mps = csv.number(vx);
+    truth.vy_mps = csv.number(vy);
+    truth.vz_mps = csv.number(vz);
+  }
+
+  std::size_t t, x, y, z, vx, vy, vz;
+};
+
 constexpr long long kChannelMask = (1LL << (2 * 8)) - 1;  // 8 beacons x 2 paths
 
 }  // namespace
@@ -79,10 +105,7 @@ void write_pcl_truth_csv(const std::filesystem::path& path, const PclScenarioRun
 std::vector<PclTruthRow> read_pcl_truth_csv(const std::filesystem::path& path) {
   std::ifstream in = open_in(path);
   CsvReader csv(in, path.string());
-  const std::size_t c_t = csv.require_column("time_s");
-  const std::size_t c_x = csv.require_column("x_m"), c_y = csv.require_column("y_m"), c_z = csv.require_column("z_m");
-  const std::size_t c_vx = csv.require_column("vx_mps"), c_vy = csv.require_column("vy_mps"),
-                    c_vz = csv.require_column("vz_mps");
+  const KinematicColumns kinematics(csv);
   const std::size_t c_rb = csv.require_column("rb_m"), c_drb = csv.require_column("drb_mps");
   const std::size_t c_fd = csv.require_column("fd_hz"), c_det = csv.require_column("detected");
   const std::size_t c_trb = csv.require_column("target_rb_mm"), c_tfd = csv.require_column("target_doppler_mhz"),
@@ -90,13 +113,7 @@ std::vector<PclTruthRow> read_pcl_truth_csv(const std::filesystem::path& path) {
   std::vector<PclTruthRow> rows;
   while (csv.next()) {
     PclTruthRow r;
-    r.truth.t_s = read_time(csv, c_t, rows.empty() ? 0.0 : rows.back().truth.t_s, rows.empty());
-    r.truth.x_m = csv.number(c_x);
-    r.truth.y_m = csv.number(c_y);
-    r.truth.z_m = csv.number(c_z);
-    r.truth.vx_mps = csv.number(c_vx);
-    r.truth.vy_mps = csv.number(c_vy);
-    r.truth.vz_mps = csv.number(c_vz);
+    kinematics.read(csv, rows, r.truth);
     r.truth.rb_m = csv.number(c_rb);
     r.truth.drb_mps = csv.number(c_drb);
     r.truth.fd_hz = csv.number(c_fd);
@@ -140,22 +157,13 @@ void write_uw_truth_csv(const std::filesystem::path& path, const UwScenarioRun& 
 std::vector<UwTruthRow> read_uw_truth_csv(const std::filesystem::path& path) {
   std::ifstream in = open_in(path);
   CsvReader csv(in, path.string());
-  const std::size_t c_t = csv.require_column("time_s");
-  const std::size_t c_x = csv.require_column("x_m"), c_y = csv.require_column("y_m"), c_z = csv.require_column("z_m");
-  const std::size_t c_vx = csv.require_column("vx_mps"), c_vy = csv.require_column("vy_mps"),
-                    c_vz = csv.require_column("vz_mps");
+  const KinematicColumns kinematics(csv);
   const std::size_t c_c = csv.require_column("c_mps");
   const std::size_t c_ch = csv.require_column("channels"), c_out = csv.require_column("outlier_channels");
   std::vector<UwTruthRow> rows;
   while (csv.next()) {
     UwTruthRow r;
-    r.truth.t_s = read_time(csv, c_t, rows.empty() ? 0.0 : rows.back().truth.t_s, rows.empty());
-    r.truth.x_m = csv.number(c_x);
-    r.truth.y_m = csv.number(c_y);
-    r.truth.z_m = csv.number(c_z);
-    r.truth.vx_mps = csv.number(c_vx);
-    r.truth.vy_mps = csv.number(c_vy);
-    r.truth.vz_mps = csv.number(c_vz);
+    kinematics.read(csv, rows, r.truth);
     r.truth.c_mps = csv.number(c_c);
     r.channels = static_cast<std::uint32_t>(csv.integer(c_ch, 0, kChannelMask));
     r.outlier_channels = static_cast<std::uint32_t>(csv.integer(c_out, 0, kChannelMask));
