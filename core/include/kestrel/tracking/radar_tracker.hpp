@@ -33,6 +33,14 @@ struct RadarTrackerParams {
   /// target's is missing. 25 (5 gate radii) suits a sensor without clutter
   /// whose noise may grow 5-fold for a while (docs/robustness.md).
   double robust_gate_factor = 0.0;
+  /// With the robust gate on, confirmed tracks fuse with lambda R, lambda
+  /// in [1, robust_noise_max_scale] following each track's NIS with this
+  /// weight per plot (TrackerConfig::robust_noise_gain,
+  /// association/adaptive_noise.hpp). Acts only with the robust gate; 0:
+  /// off. Chosen on the robustness variants' tuning seeds (docs/robustness.md).
+  double robust_noise_gain = 0.2;
+  /// lambda's upper bound: R up to this factor (sigma up to its root).
+  double robust_noise_max_scale = 16.0;
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
   std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
   std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
@@ -68,6 +76,8 @@ struct RadarTrackerScalars {
   Scalar max_range_m;               ///< Largest valid range, m.
   Scalar max_position_variance_m2;  ///< Deletion limit on var(x) + var(y), m^2.
   Scalar robust_gate_factor;        ///< Outer gate / chi-square gate, in d2.
+  Scalar robust_noise_gain;         ///< Adaptive noise: weight of a plot's NIS excess.
+  Scalar robust_noise_max_scale;    ///< Adaptive noise: largest scale of R.
 };
 
 template <class Scalar>
@@ -77,7 +87,8 @@ constexpr RadarTrackerScalars<Scalar> radar_tracker_scalars(const RadarTrackerPa
                                      T::from_double(p.qj), T::from_double(p.max_speed_mps),
                                      T::from_double(p.init_accel_sigma_mps2), T::from_double(p.max_range_m),
                                      T::from_double(p.max_position_variance_m2),
-                                     T::from_double(p.robust_gate_factor)};
+                                     T::from_double(p.robust_gate_factor), T::from_double(p.robust_noise_gain),
+                                     T::from_double(p.robust_noise_max_scale)};
 }
 
 /// Tracker-level configuration: the integer fields of p, the real ones from s.
@@ -95,6 +106,8 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const
   c.resync_frames = p.resync_frames;
   c.max_position_variance_m2 = s.max_position_variance_m2;
   c.robust_gate_factor = s.robust_gate_factor;
+  c.robust_noise_gain = s.robust_noise_gain;
+  c.robust_noise_max_scale = s.robust_noise_max_scale;
   c.z_min << Scalar(0), -T::pi();
   c.z_max << s.max_range_m, T::pi();
   return c;

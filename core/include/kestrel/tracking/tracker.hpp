@@ -112,6 +112,16 @@ concept PredictsMeasurement = requires(const F& f, const typename F::MeasVec& z)
   { f.predicted_measurement().distance(z) } -> std::same_as<PlotDistance<typename F::Scalar>>;
 };
 
+/// A filter that fuses a plot with its model's R scaled by a factor (Ekf,
+/// Imm): what a track's adaptive measurement noise needs
+/// (association/adaptive_noise.hpp). Other filters keep R as it is.
+template <class F>
+concept ScalesMeasurementNoise = requires(F& f, const F& cf, const typename F::MeasVec& z,
+                                          typename F::Scalar s) {
+  { cf.innovation_scaled(z, s) } -> std::same_as<Innovation<typename F::Scalar, F::kMeasDim>>;
+  { f.update_scaled(z, s) } -> std::same_as<Status>;
+};
+
 /// A filter that can fold several plots in at once with association
 /// weights (probabilistic association, association/pda.hpp).
 template <class F, std::size_t kMax>
@@ -138,6 +148,13 @@ struct TrackerConfig {
   /// innovation shrunk to the gate's edge. 0: off, a plot beyond the gate is
   /// a miss. For single-plot associators (NN, GNN); PDA weighs its own gate.
   Scalar robust_gate_factor{};
+  /// With the robust gate: every confirmed track fuses its plots with
+  /// lambda R, lambda in [1, robust_noise_max_scale] following the track's
+  /// NIS with weight robust_noise_gain per plot (association/adaptive_noise.hpp),
+  /// for a filter that takes a scaled R (ScalesMeasurementNoise). A gain
+  /// of 0 (or not below 1) or a max scale of 1 or less: off, R as modelled.
+  Scalar robust_noise_gain{};
+  Scalar robust_noise_max_scale{};  ///< lambda's upper bound (see robust_noise_gain).
   std::uint8_t confirm_m = 2;          ///< MOfN: confirm with M associations ...
   std::uint8_t confirm_n = 3;          ///< ... in the first N frames (N <= 8).
   std::uint16_t max_coast_misses = 5;  ///< MOfN: delete a confirmed track after this many misses in a row.
@@ -175,6 +192,7 @@ struct StepStats {
   std::uint16_t unhealthy = 0;  ///< Deleted: P not positive definite, or a variance not positive and finite (also in `deleted`).
   std::uint16_t restarted = 0;  ///< Lost tracks started again from their plot (TrackVerdict::kRestart).
   std::uint16_t clipped = 0;    ///< Of `associated`: taken beyond the gate with a shrunk innovation (RobustGate).
+  std::uint16_t noise_scaled = 0;  ///< Of `associated`: fused with lambda R, lambda > 1 (AdaptiveNoise).
   bool resynced = false;        ///< The tracker restarted on this frame's clock (tracks deleted first).
   /// The first status a filter or the initiator refused with in this frame
   /// (kOk: none), e.g. kUnderdetermined from a multilateration initiator.
@@ -216,6 +234,7 @@ class Tracker {
         associator_(associator),
         clock_(config.max_forward_jump_us, config.resync_frames) {
     prototype_.filter = prototype;
+    prototype_.noise_scale = Scalar(1);
     gate_confirmed_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_confirmed);
     gate_tentative_ = EllipsoidalGate<Scalar, kMeasDim>::with_probability(config.gate_tentative);
     gate_probability_confirmed_ = probability_of(config.gate_confirmed);
@@ -228,6 +247,8 @@ class Tracker {
       // beyond the chi-square one.
       robust_confirmed_.inner = gate_confirmed_.threshold;
       gate_confirmed_.threshold = gate_confirmed_.threshold * config.robust_gate_factor;
+      // A plot's NIS counts up to the chi-square gate, as a clipped plot does.
+      robust_confirmed_.noise = {config.robust_noise_gain, config.robust_noise_max_scale, robust_confirmed_.inner};
     }
     manager_.configure(config_);
   }
@@ -548,8 +569,25 @@ class Tracker {
                bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
     TrackT& tr = table_[slot];
-    const bool clipped = robust.clips(in);
-    const Status s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
+    // With the adaptive noise the plot is tested and fused against
+    // lambda R (the association above measured it against R).
+    Innov fused = in;
+    Scalar scale(1);
+    bool clipped = false;
+    Status s = Status::kOk;
+    if constexpr (ScalesMeasurementNoise<Filter> && !ChannelFilter<Filter>) {
+      if (robust.noise.enabled()) scale = robust.noise.clamped(tr.noise_scale);
+    }
+    if (scale > Scalar(1)) {
+      if constexpr (ScalesMeasurementNoise<Filter> && !ChannelFilter<Filter>) {
+        fused = tr.filter.innovation_scaled(scan.z[j], scale);
+        clipped = robust.clips(fused);
+        s = tr.filter.update_scaled(clipped ? robust.shrink(scan.z[j], fused) : scan.z[j], scale);
+      }
+    } else {
+      clipped = robust.clips(in);
+      s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
+    }
     if (s != Status::kOk) {
       ++stats_.filter_failures;
       note_failure(s);
@@ -570,13 +608,17 @@ class Tracker {
     } else {
       tr.nis = in.d2;
       // Against the gate that decides a plain update: over 1 means clipped.
-      tr.test_ratio = in.d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
+      tr.test_ratio = fused.d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
+      if constexpr (ScalesMeasurementNoise<Filter>) {
+        if (robust.noise.enabled()) tr.noise_scale = robust.noise.next(scale, fused.d2, kMeasDim);
+      }
     }
     hit[slot] = true;
     tr.associated = true;
     manager_.hit(tr, in);
     ++stats_.associated;
     if (clipped) ++stats_.clipped;
+    if (scale > Scalar(1)) ++stats_.noise_scaled;
   }
 
   /// Update track `slot` with several measurements and their weights
@@ -844,6 +886,7 @@ class Tracker {
       tr.associated = true;
       tr.nis = tr.filter.diagnostics().nis;
       tr.test_ratio = Scalar(0);
+      tr.noise_scale = Scalar(1);
       manager_.start(tr);
       ++stats_.restarted;
     } else {
