@@ -36,9 +36,10 @@ struct RadarTrackerParams {
   /// With the robust gate on, confirmed tracks fuse with lambda R, lambda
   /// in [1, robust_noise_max_scale] following each track's NIS with this
   /// weight per plot (TrackerConfig::robust_noise_gain,
-  /// association/adaptive_noise.hpp). Acts only with the robust gate; 0:
-  /// off. Chosen on the robustness variants' tuning seeds (docs/robustness.md).
-  double robust_noise_gain = 0.2;
+  /// association/adaptive_noise.hpp). 0, off, by default: a filter that
+  /// lags a manoeuvre (EKF-CA at qj 1.6 on S1) reads its lag as noise and
+  /// lags further. 0.2 suits the IMM (docs/robustness.md).
+  double robust_noise_gain = 0.0;
   /// lambda's upper bound: R up to this factor (sigma up to its root).
   double robust_noise_max_scale = 16.0;
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).

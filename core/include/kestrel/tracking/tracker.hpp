@@ -610,7 +610,10 @@ class Tracker {
       // Against the gate that decides a plain update: over 1 means clipped.
       tr.test_ratio = fused.d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
       if constexpr (ScalesMeasurementNoise<Filter>) {
-        if (robust.noise.enabled()) tr.noise_scale = robust.noise.next(scale, fused.d2, kMeasDim);
+        // Only a plot that follows a plot of the previous frame: a track
+        // that coasted (its prediction, not the sensor, is off) or that
+        // takes another track's plot now and then is not a noisy sensor.
+        if (robust.noise.enabled() && tr.misses == 0) tr.noise_scale = robust.noise.next(scale, fused.d2, kMeasDim);
       }
     }
     hit[slot] = true;
