@@ -151,8 +151,9 @@ struct TrackerConfig {
   /// With the robust gate: every confirmed track fuses its plots with
   /// lambda R, lambda in [1, robust_noise_max_scale] following the track's
   /// NIS with weight robust_noise_gain per plot (association/adaptive_noise.hpp),
-  /// for a filter that takes a scaled R (ScalesMeasurementNoise). A gain
-  /// of 0 (or not below 1) or a max scale of 1 or less: off, R as modelled.
+  /// for a filter that takes a scaled R (ScalesMeasurementNoise); lambda
+  /// moves only on a plot that follows a hit of the previous frame. A gain
+  /// of 0 (or over 1) or a max scale of 1 or less: off, R as modelled.
   Scalar robust_noise_gain{};
   Scalar robust_noise_max_scale{};  ///< lambda's upper bound (see robust_noise_gain).
   std::uint8_t confirm_m = 2;          ///< MOfN: confirm with M associations ...
