@@ -572,7 +572,7 @@ class Tracker {
     TrackT& tr = table_[slot];
     // With the adaptive noise the plot is tested and fused against
     // lambda R (the association above measured it against R).
-    Innov fused = in;
+    Scalar fused_d2 = in.d2;  // the plot's NIS against the S it is fused with
     Scalar scale(1);
     bool clipped = false;
     Status s = Status::kOk;
@@ -581,7 +581,8 @@ class Tracker {
     }
     if (scale > Scalar(1)) {
       if constexpr (ScalesMeasurementNoise<Filter> && !ChannelFilter<Filter>) {
-        fused = tr.filter.innovation_scaled(scan.z[j], scale);
+        const Innov fused = tr.filter.innovation_scaled(scan.z[j], scale);
+        fused_d2 = fused.d2;
         clipped = robust.clips(fused);
         s = tr.filter.update_scaled(clipped ? robust.shrink(scan.z[j], fused) : scan.z[j], scale);
       }
@@ -609,12 +610,12 @@ class Tracker {
     } else {
       tr.nis = in.d2;
       // Against the gate that decides a plain update: over 1 means clipped.
-      tr.test_ratio = fused.d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
+      tr.test_ratio = fused_d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
       if constexpr (ScalesMeasurementNoise<Filter>) {
         // Only a plot that follows a plot of the previous frame: a track
         // that coasted (its prediction, not the sensor, is off) or that
         // takes another track's plot now and then is not a noisy sensor.
-        if (robust.noise.enabled() && tr.misses == 0) tr.noise_scale = robust.noise.next(scale, fused.d2, kMeasDim);
+        if (robust.noise.enabled() && tr.misses == 0) tr.noise_scale = robust.noise.next(scale, fused_d2, kMeasDim);
       }
     }
     hit[slot] = true;
