@@ -108,9 +108,10 @@ SCENARIO("Without the robust gate a noise burst breaks the board IMM track", "[h
 
 SCENARIO("The adaptive measurement noise removes the lost episodes of the board IMM in a noise burst",
          "[host_sim][e2e][robustness]") {
-  // With the adaptive noise off, the x3 burst pulls the estimate beyond L
-  // (the track is kept and updated every frame, but fused with R as
-  // modelled each plot moves it by its full 240 m cross-range noise).
+  // With the adaptive noise off, the x3 burst pulls the estimate beyond L:
+  // the track is kept and takes every plot, but fused with R as modelled
+  // each plot (240 m of cross-range noise at 15 km) gets the gain of a
+  // plot three times better.
   constexpr std::uint64_t kTuningSeed = kAdaptiveFirstSeed;
   for (const char* filter : {"imm", "imm-f32"}) {
     GIVEN(filter << " on s2-burst with the board gate and robust gate 25 over " << kAdaptiveRuns
