@@ -3,11 +3,15 @@
 // [1, max] whatever the NIS (NaN, Inf, negative, huge), moves by a bounded
 // step per plot, rises under a burst and decays after it; the filters'
 // scaled update keeps P positive definite in float as in double and
-// allocates nothing; inside the tracker it acts only with the robust gate.
+// allocates nothing; inside a tracker built with AdaptiveMeasurementNoise
+// it acts only with the robust gate, with a gain of 0 it gives what the
+// nominal tracker gives, bit for bit, and a tracker built without it
+// refuses a gain.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <limits>
 #include <random>
+#include <type_traits>
 
 #include "kestrel/association/adaptive_noise.hpp"
 #include "kestrel/filters/imm_radar.hpp"
@@ -213,7 +217,10 @@ TEMPLATE_TEST_CASE("Scenario: inside the tracker the noise scale adapts only wit
     p.qj = 16.0;
     p.robust_gate_factor = robust_gate_factor;
     p.robust_noise_gain = gain;
-    auto tracker = kestrel::make_radar_tracker<S, 16, 32>(p);
+    using Adaptive = kestrel::AdaptiveRadarTracker<kestrel::EkfCa<S>, 16, 32>;
+    const auto nominal = kestrel::make_radar_tracker<S, 16, 32>(p);
+    Adaptive tracker(nominal.prototype_filter(), nominal.initiator(), nominal.config());
+    REQUIRE(tracker.configure_measurement_noise(kestrel::radar_measurement_noise<S>(p)) == Status::kOk);
     std::mt19937 rng(21);
     struct Outcome {
       double largest = 1.0, last = 1.0;
@@ -232,10 +239,10 @@ TEMPLATE_TEST_CASE("Scenario: inside the tracker the noise scale adapts only wit
         out.allocations += guard.allocations();
       }
       REQUIRE(stepped == Status::kOk);
-      out.scaled_updates += tracker.last_step().noise_scaled;
+      out.scaled_updates += tracker.measurement_noise().scaled_updates();
       if (tracker.reports().size() == 1) ++out.frames_with_one_track;
       for (const std::size_t i : tracker.tracks().active_slots()) {
-        const double scale = static_cast<double>(tracker.tracks()[i].noise_scale);
+        const double scale = static_cast<double>(tracker.measurement_noise().scale(i));
         out.largest = std::max(out.largest, scale);
         out.last = scale;
       }
@@ -262,6 +269,66 @@ TEMPLATE_TEST_CASE("Scenario: inside the tracker the noise scale adapts only wit
       CHECK(no_gain.scaled_updates == 0);
       CHECK(no_robust.largest == 1.0);
       CHECK(no_robust.scaled_updates == 0);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Scenario: a tracker without the adaptive noise refuses a gain; with a gain of 0 the adaptive one is the nominal one",
+                   "[adaptive_noise][tracker]", double, float) {
+  using S = TestType;
+  using Nominal = kestrel::RadarTracker<kestrel::EkfCa<S>, 16, 32>;
+  using Adaptive = kestrel::AdaptiveRadarTracker<kestrel::EkfCa<S>, 16, 32>;
+  STATIC_REQUIRE(!Nominal::MeasurementNoiseT::kAdapts);
+  STATIC_REQUIRE(Adaptive::MeasurementNoiseT::kAdapts);
+  // The nominal policy has no state: the tracker is the size it was without it.
+  STATIC_REQUIRE(std::is_empty_v<typename Nominal::MeasurementNoiseT>);
+  kestrel::RadarTrackerParams p;
+  p.robust_gate_factor = 25.0;
+  GIVEN("a tracker built without the adaptive noise (make_radar_tracker, every board's)") {
+    auto tracker = kestrel::make_radar_tracker<S, 16, 32>(p);
+    THEN("a gain is refused with kOutOfRange, a gain of 0 is accepted") {
+      p.robust_noise_gain = 0.2;
+      CHECK(tracker.configure_measurement_noise(kestrel::radar_measurement_noise<S>(p)) == Status::kOutOfRange);
+      p.robust_noise_gain = 0.0;
+      CHECK(tracker.configure_measurement_noise(kestrel::radar_measurement_noise<S>(p)) == Status::kOk);
+    }
+  }
+  GIVEN("a tracker built with it") {
+    const auto nominal = kestrel::make_radar_tracker<S, 16, 32>(p);
+    Adaptive tracker(nominal.prototype_filter(), nominal.initiator(), nominal.config());
+    THEN("a gain outside [0, 1], a max scale below 1 or a NaN is refused") {
+      CHECK(tracker.configure_measurement_noise({S(1.5), S(16)}) == Status::kOutOfRange);
+      CHECK(tracker.configure_measurement_noise({S(-0.1), S(16)}) == Status::kOutOfRange);
+      CHECK(tracker.configure_measurement_noise({S(0.2), S(0.5)}) == Status::kOutOfRange);
+      CHECK(tracker.configure_measurement_noise({std::numeric_limits<S>::quiet_NaN(), S(16)}) == Status::kNonFinite);
+      CHECK(tracker.configure_measurement_noise({S(0.2), S(16)}) == Status::kOk);
+    }
+  }
+  GIVEN("a burst, tracked by the nominal tracker and by the adaptive one with a gain of 0") {
+    auto nominal = kestrel::make_radar_tracker<S, 16, 32>(p);
+    Adaptive adaptive(nominal.prototype_filter(), nominal.initiator(), nominal.config());
+    REQUIRE(adaptive.configure_measurement_noise(kestrel::radar_measurement_noise<S>(p)) == Status::kOk);
+    THEN("every report is the same, bit for bit") {
+      std::mt19937 rng(7);
+      int reports = 0;
+      for (int k = 0; k < 140; ++k) {
+        typename Nominal::Scan scan;
+        scan.t_us = k * 500000LL;
+        scan.count = 1;
+        scan.z[0] = plot_at<S>(0.5 * k, k >= 40 && k < 100 ? 3.0 : 1.0, rng);
+        REQUIRE(nominal.step(scan) == Status::kOk);
+        REQUIRE(adaptive.step(scan) == Status::kOk);
+        REQUIRE(nominal.reports().size() == adaptive.reports().size());
+        for (std::size_t i = 0; i < nominal.reports().size(); ++i) {
+          CHECK(nominal.reports()[i].x == adaptive.reports()[i].x);
+          CHECK(nominal.reports()[i].P == adaptive.reports()[i].P);
+          CHECK(nominal.reports()[i].test_ratio == adaptive.reports()[i].test_ratio);
+          ++reports;
+        }
+        CHECK(nominal.last_step().clipped == adaptive.last_step().clipped);
+        CHECK(adaptive.measurement_noise().scaled_updates() == 0);
+      }
+      CHECK(reports > 100);
     }
   }
 }

@@ -15,9 +15,11 @@
 // far plot from moving lambda by more than alpha (cap / m - 1) of itself,
 // and lambda never leaves [1, lambda_max]; every lambda R is positive
 // definite, so the filter's own update keeps P positive definite. No state
-// but lambda, no allocation, two multiplications a plot. The tracker
-// (tracking/tracker.hpp) applies it to confirmed tracks under the robust
-// gate, and only on a plot that follows a hit of the previous frame.
+// but lambda, no allocation, two multiplications a plot. A tracker built
+// with AdaptiveMeasurementNoise (tracking/measurement_noise.hpp, a
+// compile-time choice; boards leave it out) applies it to confirmed tracks
+// under the robust gate, and only on a plot that follows a hit of the
+// previous frame.
 #pragma once
 
 #include "kestrel/scalar/scalar_traits.hpp"

@@ -10,13 +10,14 @@
 // times what the filter assumes (a burst), tracks keep taking their plots,
 // each moving the state no further than a plot on the gate's edge would,
 // instead of coasting to deletion; a gross outlier (hundreds of sigma)
-// stays outside the outer gate and cannot drag the track. With it, a track
-// may adapt its measurement noise to its innovations (adaptive_noise.hpp),
-// so that a burst is fused with the R it has rather than clipped plot by
-// plot with the R the model assumes.
+// stays outside the outer gate and cannot drag the track. A tracker built
+// with AdaptiveMeasurementNoise (tracking/measurement_noise.hpp) may also
+// let its confirmed tracks adapt their measurement noise to their
+// innovations under this gate (association/adaptive_noise.hpp), so that a
+// burst is fused with the R it has rather than clipped plot by plot with
+// the R the model assumes.
 #pragma once
 
-#include "kestrel/association/adaptive_noise.hpp"
 #include "kestrel/filters/innovation.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
@@ -27,8 +28,6 @@ template <class Scalar, int kMeasDim>
 struct RobustGate {
   /// g, the d2 up to which an update is plain; 0: robust gating off.
   Scalar inner{};
-  /// The tracks' adaptive measurement noise (off unless its fields say so).
-  AdaptiveNoise<Scalar> noise{};
 
   /// true if the plot of innovation `in` is taken with a shrunk innovation.
   bool clips(const Innovation<Scalar, kMeasDim>& in) const {

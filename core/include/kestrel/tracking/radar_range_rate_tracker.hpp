@@ -63,8 +63,6 @@ TrackerConfig<Scalar, 3> radar_range_rate_tracker_config(const RadarRangeRateTra
   c.gate_tentative = rb.gate_tentative;
   c.gate_confirmed_threshold = rb.gate_confirmed_threshold;
   c.robust_gate_factor = rb.robust_gate_factor;
-  c.robust_noise_gain = rb.robust_noise_gain;
-  c.robust_noise_max_scale = rb.robust_noise_max_scale;
   c.confirm_m = rb.confirm_m;
   c.confirm_n = rb.confirm_n;
   c.max_coast_misses = rb.max_coast_misses;

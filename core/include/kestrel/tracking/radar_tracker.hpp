@@ -35,10 +35,14 @@ struct RadarTrackerParams {
   double robust_gate_factor = 0.0;
   /// With the robust gate on, confirmed tracks fuse with lambda R, lambda
   /// in [1, robust_noise_max_scale] following each track's NIS with this
-  /// weight per plot (TrackerConfig::robust_noise_gain,
-  /// association/adaptive_noise.hpp). 0, off, by default: a filter that
-  /// lags a manoeuvre (EKF-CA at qj 1.6 on S1) reads its lag as noise and
-  /// lags further. 0.2 suits the IMM (docs/robustness.md).
+  /// weight per plot (AdaptiveMeasurementNoise, association/adaptive_noise.hpp).
+  /// Only a tracker built with AdaptiveMeasurementNoise honours it, through
+  /// configure_measurement_noise(radar_measurement_noise<Scalar>(p)); one
+  /// built without it (make_radar_tracker(), every board's) refuses any
+  /// value but 0 there with kOutOfRange, and make_radar_tracker() does not
+  /// read it. 0, off, by default: a filter that lags a manoeuvre (EKF-CA at
+  /// qj 1.6 on S1) reads its lag as noise and lags further. 0.2 suits the
+  /// IMM (docs/robustness.md).
   double robust_noise_gain = 0.0;
   /// lambda's upper bound: R up to this factor (sigma up to its root).
   double robust_noise_max_scale = 16.0;
@@ -63,6 +67,23 @@ using RadarTracker =
     Tracker<Filter, TwoPointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
             kMaxTracks, kMaxPlots>;
 
+/// The radar tracker with adaptive measurement noise
+/// (AdaptiveMeasurementNoise): a compile-time choice, for a filter with a
+/// scaled update (EkfCa, RadarImm). Give it its rule with
+/// configure_measurement_noise(radar_measurement_noise<Scalar>(p)).
+template <class Filter, std::size_t kMaxTracks, std::size_t kMaxPlots>
+using AdaptiveRadarTracker =
+    Tracker<Filter, TwoPointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
+            kMaxTracks, kMaxPlots, NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
+
+/// p's adaptive noise rule (robust_noise_gain, robust_noise_max_scale) in
+/// the tracker's scalar, for Tracker::configure_measurement_noise().
+template <class Scalar>
+constexpr MeasurementNoiseParams<Scalar> radar_measurement_noise(const RadarTrackerParams& p) {
+  using T = ScalarTraits<Scalar>;
+  return {T::from_double(p.robust_noise_gain), T::from_double(p.robust_noise_max_scale)};
+}
+
 /// The real-valued parameters in the tracker's scalar. For a fixed-point
 /// board, build them in a constant expression,
 ///   constexpr auto kScalars = radar_tracker_scalars<Q31_32>(RadarTrackerParams{});
@@ -77,8 +98,6 @@ struct RadarTrackerScalars {
   Scalar max_range_m;               ///< Largest valid range, m.
   Scalar max_position_variance_m2;  ///< Deletion limit on var(x) + var(y), m^2.
   Scalar robust_gate_factor;        ///< Outer gate / chi-square gate, in d2.
-  Scalar robust_noise_gain;         ///< Adaptive noise: weight of a plot's NIS excess.
-  Scalar robust_noise_max_scale;    ///< Adaptive noise: largest scale of R.
 };
 
 template <class Scalar>
@@ -88,8 +107,7 @@ constexpr RadarTrackerScalars<Scalar> radar_tracker_scalars(const RadarTrackerPa
                                      T::from_double(p.qj), T::from_double(p.max_speed_mps),
                                      T::from_double(p.init_accel_sigma_mps2), T::from_double(p.max_range_m),
                                      T::from_double(p.max_position_variance_m2),
-                                     T::from_double(p.robust_gate_factor), T::from_double(p.robust_noise_gain),
-                                     T::from_double(p.robust_noise_max_scale)};
+                                     T::from_double(p.robust_gate_factor)};
 }
 
 /// Tracker-level configuration: the integer fields of p, the real ones from s.
@@ -107,8 +125,6 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const
   c.resync_frames = p.resync_frames;
   c.max_position_variance_m2 = s.max_position_variance_m2;
   c.robust_gate_factor = s.robust_gate_factor;
-  c.robust_noise_gain = s.robust_noise_gain;
-  c.robust_noise_max_scale = s.robust_noise_max_scale;
   c.z_min << Scalar(0), -T::pi();
   c.z_max << s.max_range_m, T::pi();
   return c;

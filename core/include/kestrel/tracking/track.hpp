@@ -48,9 +48,6 @@ struct Track {
   Scalar test_ratio{};                 ///< nis / association gate threshold (<= 1 inside).
   Scalar score{};                      ///< Track score of a score-based manager (SequentialLlr), 0 otherwise.
   Scalar score_peak{};                 ///< Highest score so far.
-  /// lambda, the scale of R the track fuses with (AdaptiveNoise; 1 unless
-  /// the robust gate's adaptive noise is on).
-  Scalar noise_scale = Scalar(1);
 };
 
 /// What the tracker publishes per reported track and frame.
