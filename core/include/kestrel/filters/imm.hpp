@@ -263,14 +263,13 @@ class Imm {
     CommonCov Pc;
     lift<Layout, kStateDim>(output.x(), output.P(), xc, Pc);
     Modes modes = modes_;
-    const Status s = for_each_mode([&](auto j) {
+    KESTREL_TRY(for_each_mode([&](auto j) {
       constexpr int kJ = decltype(j)::value;
       typename Mode<kJ>::State xj;
       typename Mode<kJ>::Cov Pj;
       project<typename Mode<kJ>::Layout, Mode<kJ>::kStateDim>(xc, Pc, xj, Pj);
       return std::get<kJ>(modes).reset(xj, Pj);
-    });
-    if (s != Status::kOk) return s;
+    }));
     modes_ = modes;
     output_ = output;
     xc_ = xc;
@@ -301,7 +300,8 @@ class Imm {
     lift_modes(modes_, X, PX);
 
     Modes modes = modes_;
-    const Status s = for_each_mode([&](auto j) {
+    // (named: the macro inside the lambda would shadow the outer one's status)
+    const Status predicted = for_each_mode([&](auto j) {
       constexpr int kJ = decltype(j)::value;
       // Step 2: the mixed initial condition of mode j, in the common state.
       CommonState x0 = CommonState::Zero();
@@ -318,7 +318,7 @@ class Imm {
       KESTREL_TRY(mode.reset(xj, Pj));
       return mode.predict(dt);
     });
-    if (s != Status::kOk) return s;
+    KESTREL_TRY(predicted);
     return commit(modes, floored(c), mixing);
   }
 
@@ -486,14 +486,15 @@ class Imm {
     diag_.fused = false;
     if (!all_finite(z)) return fail(Status::kNonFinite);
     const Innov combined = kScaled ? output_.innovation_scaled(z, scale) : output_.innovation(z);
-    if (combined.status != Status::kOk) return fail(combined.status);
+    KESTREL_TRY_OR(fail, combined.status);
     Modes modes = modes_;
     Probabilities log_posterior;
-    const Status s = for_each_mode([&](auto j) {
+    // (named: the macro inside the lambda would shadow the outer one's status)
+    const Status fused = for_each_mode([&](auto j) {
       constexpr int kJ = decltype(j)::value;
       auto& mode = std::get<kJ>(modes);
       const auto inn = kScaled ? mode.innovation_scaled(z, scale) : mode.innovation(z);
-      if (inn.status != Status::kOk) return inn.status;
+      KESTREL_TRY(inn.status);
       Scalar log_det(0);
       if (!log_det_spd(inn.S, log_det)) return Status::kNotPositiveDefinite;
       // Step 3's likelihood in logs (the 2 pi term is common to all modes
@@ -505,7 +506,7 @@ class Imm {
         return mode.update(z);
       }
     });
-    if (s != Status::kOk) return fail(s);
+    KESTREL_TRY_OR(fail, fused);
     if (!all_finite(log_posterior)) return fail(Status::kNonFinite);
 
     // Step 4, shifted by the largest term before exp, so the
