@@ -69,7 +69,8 @@ const RadarKey kRadarKeys[] = {
   {"robust_noise_gain", 0.0, false, 1.0, false,
    [](const RadarTrackerParams& p) { return p.robust_noise_gain; },
    [](RadarTrackerParams& p, double v) { p.robust_noise_gain = v; },
-   "with the robust gate, the weight of each plot's NIS excess in a confirmed track's scale of R (0: off)"},
+   "with the robust gate, the weight of each plot's NIS excess in a confirmed track's scale of R (0: off; "
+   "ekf-ca and imm only, the other filters refuse a gain)"},
   {"robust_noise_max_scale", 1.0, false, kInf, false,
    [](const RadarTrackerParams& p) { return p.robust_noise_max_scale; },
    [](RadarTrackerParams& p, double v) { p.robust_noise_max_scale = v; },
