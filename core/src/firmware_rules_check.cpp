@@ -13,6 +13,11 @@ template class Ekf<CaMotion<double>, CaPolarRadar<double>>;
 template class Ekf<CaMotion<float>, CaPolarRadar<float>>;
 template class Tracker<EkfCa<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>, 8, 32>;
 template class Tracker<EkfCa<float>, TwoPointInitiator<CaMotion<float>, CaPolarRadar<float>>, 8, 32>;
+// The adaptive measurement noise, a compile-time choice boards leave out.
+template class Tracker<EkfCa<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>, 8, 32,
+                       NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
+template class Tracker<EkfCa<float>, TwoPointInitiator<CaMotion<float>, CaPolarRadar<float>>, 8, 32,
+                       NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
 template class Ekf<CaMotion<double>, CaPolarRadarRangeRate<double>>;
 template class Ekf<CaMotion<float>, CaPolarRadarRangeRate<float>>;
 template class Ekf<ConstantVelocity2D<double>, PolarRadarRangeRate<ConstantVelocity2D<double>>>;

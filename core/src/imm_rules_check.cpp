@@ -19,6 +19,10 @@ template class Imm<ConstantAcceleration2D<float>, PolarRadar<ConstantAcceleratio
                    ImmCaMode<float>, ImmCtMode<float>>;
 template class Tracker<RadarImm<double>, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>, 8, 32>;
 template class Tracker<RadarImm<float>, TwoPointInitiator<CaMotion<float>, CaPolarRadar<float>>, 8, 32>;
+template class Tracker<RadarImm<float>, TwoPointInitiator<CaMotion<float>, CaPolarRadar<float>>, 8, 32,
+                       NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
+static_assert(ScalesMeasurementNoise<RadarImm<double>>);
+static_assert(ScalesMeasurementNoise<RadarImm<float>>);
 
 static_assert(TrackingFilter<RadarImm<double>>);
 static_assert(TrackingFilter<RadarImm<float>>);

@@ -15,7 +15,7 @@ namespace {
 
 template <class Scalar>
 StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  using Tracker = host::BoardRadarTracker<EkfCa<Scalar>>;
+  using Tracker = SimRadarTracker<EkfCa<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(make_ekf_ca_tracker<Scalar>(options));
   return run_stream(*tracker, std::move(stream), budget_ns);
@@ -24,7 +24,7 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
 }  // namespace
 
 template <class Scalar>
-host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options) {
+SimRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options) {
   using T = ScalarTraits<Scalar>;
   const RadarTrackerParams p = radar_tracker_params(options);
   // What make_radar_tracker() builds, plus the confirmed-track gate, which
@@ -38,11 +38,13 @@ host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& 
       radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
-  return host::BoardRadarTracker<EkfCa<Scalar>>(EkfCa<Scalar>(motion, radar), init, config);
+  SimRadarTracker<EkfCa<Scalar>> tracker(EkfCa<Scalar>(motion, radar), init, config);
+  apply_measurement_noise(tracker, p);
+  return tracker;
 }
 
-template host::BoardRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(const FilterOptions&);
-template host::BoardRadarTracker<EkfCa<float>> make_ekf_ca_tracker<float>(const FilterOptions&);
+template SimRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(const FilterOptions&);
+template SimRadarTracker<EkfCa<float>> make_ekf_ca_tracker<float>(const FilterOptions&);
 
 FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, const char* scalar) {
   const RadarTrackerParams p = radar_tracker_params(options);

@@ -17,11 +17,21 @@ namespace kestrel::sim {
 /// polar radar ("UKF (float), qj 160"); every such filter shares them.
 FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, const char* scalar);
 
-/// The host board's EKF-CA tracker for these options (double and float are
+/// kestrel-sim's radar tracker for a filter with a scaled update (EKF-CA,
+/// the IMM): the host board's capacities with the adaptive measurement
+/// noise compiled in (AdaptiveMeasurementNoise), so that the
+/// robust_noise_gain key acts; with its default of 0 it gives what the
+/// board's tracker (host::BoardRadarTracker) gives, bit for bit (golden
+/// tests). Boards build the nominal one.
+template <class Filter>
+using SimRadarTracker = AdaptiveRadarTracker<Filter, host::kMaxTracks, host::kMaxPlots>;
+
+/// kestrel-sim's EKF-CA tracker for these options (double and float are
 /// instantiated). Unless options.confirmed_gate_d2 is set, confirmed tracks
-/// are ungated (FilterOptions).
+/// are ungated (FilterOptions). Throws std::invalid_argument when the
+/// adaptive noise keys are out of range (apply_measurement_noise).
 template <class Scalar>
-host::BoardRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options);
+SimRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options);
 
 FilterSetup ekf_ca_setup(const FilterOptions& options);
 FilterSetup ekf_ca_f32_setup(const FilterOptions& options);

@@ -29,7 +29,9 @@ host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& option
   const TwoPointInitiator<CaMotion<Q>, CaPolarRadar<Q>> init{radar, s.max_speed_mps, s.init_accel_sigma_mps2};
   TrackerConfig<Q, 2> config = radar_tracker_config<Q>(p, s);
   apply_gate_options<Q>(options, config);
-  return host::BoardRadarTracker<EkfCa<Q>>(EkfCa<Q>(motion, radar), init, config);
+  host::BoardRadarTracker<EkfCa<Q>> tracker(EkfCa<Q>(motion, radar), init, config);
+  apply_measurement_noise(tracker, p);  // built without the adaptive noise: refuses a gain
+  return tracker;
 }
 
 template <class Q>

@@ -52,7 +52,9 @@ host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOpti
                                                                                 s.radar.init_accel_sigma_mps2};
   TrackerConfig<Scalar, 3> config = radar_range_rate_tracker_config<Scalar>(p, s);
   apply_gate_options<Scalar>(options, config);
-  return host::BoardRadarTracker<EkfCaRr<Scalar>>(EkfCaRr<Scalar>(motion, radar), init, config);
+  host::BoardRadarTracker<EkfCaRr<Scalar>> tracker(EkfCaRr<Scalar>(motion, radar), init, config);
+  apply_measurement_noise(tracker, p.radar);  // built without the adaptive noise: refuses a gain
+  return tracker;
 }
 
 template host::BoardRadarTracker<EkfCaRr<double>> make_ekf_ca_rr_tracker<double>(const FilterOptions&);

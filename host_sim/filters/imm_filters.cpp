@@ -65,7 +65,7 @@ void apply(RadarImmParams& p, const std::string& item) {
 
 template <class Scalar>
 StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  using Tracker = host::BoardRadarTracker<RadarImm<Scalar>>;
+  using Tracker = SimRadarTracker<RadarImm<Scalar>>;
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(make_imm_tracker<Scalar>(options));
   StreamRunResult r = run_stream(*tracker, std::move(stream), budget_ns);
@@ -119,7 +119,7 @@ RadarImmParams imm_params(const FilterOptions& options) {
 }
 
 template <class Scalar>
-host::BoardRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options) {
+SimRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options) {
   using T = ScalarTraits<Scalar>;
   const RadarImmParams p = imm_params(options);
   const RadarTrackerParams tp = radar_tracker_params(options);  // initiation and management of "ekf-ca"
@@ -128,11 +128,13 @@ host::BoardRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& 
       prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(tp);
   apply_gate_options<Scalar>(options, config);
-  return host::BoardRadarTracker<RadarImm<Scalar>>(prototype, init, config);
+  SimRadarTracker<RadarImm<Scalar>> tracker(prototype, init, config);
+  apply_measurement_noise(tracker, tp);
+  return tracker;
 }
 
-template host::BoardRadarTracker<RadarImm<double>> make_imm_tracker<double>(const FilterOptions&);
-template host::BoardRadarTracker<RadarImm<float>> make_imm_tracker<float>(const FilterOptions&);
+template SimRadarTracker<RadarImm<double>> make_imm_tracker<double>(const FilterOptions&);
+template SimRadarTracker<RadarImm<float>> make_imm_tracker<float>(const FilterOptions&);
 
 FilterSetup imm_setup(const FilterOptions& options) { return setup_with(options, "double"); }
 FilterSetup imm_f32_setup(const FilterOptions& options) { return setup_with(options, "float"); }

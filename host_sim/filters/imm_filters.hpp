@@ -15,6 +15,7 @@
 
 #include <cstdint>
 
+#include "filters/ekf_ca.hpp"
 #include "filters/filter_registry.hpp"
 #include "kestrel/filters/imm_radar.hpp"
 #include "kestrel/host/board.hpp"
@@ -28,7 +29,7 @@ RadarImmParams imm_params(const FilterOptions& options);
 
 /// The host board's IMM tracker (double and float are instantiated).
 template <class Scalar>
-host::BoardRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options);
+SimRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options);
 
 FilterSetup imm_setup(const FilterOptions& options);
 FilterSetup imm_f32_setup(const FilterOptions& options);

@@ -56,7 +56,9 @@ host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, co
       prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
-  return host::BoardRadarTracker<Filter>(prototype, init, config);
+  host::BoardRadarTracker<Filter> tracker(prototype, init, config);
+  apply_measurement_noise(tracker, p);  // built without the adaptive noise: refuses a gain
+  return tracker;
 }
 
 template <class Scalar>

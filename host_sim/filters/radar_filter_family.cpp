@@ -41,6 +41,7 @@ StreamRunResult run_family(StreamInput stream, const FilterOptions& options, std
   apply_gate_options<Scalar>(options, config);
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(Filter(motion, radar), init, config);
+  apply_measurement_noise(*tracker, p);  // built without the adaptive noise: refuses a gain
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 

@@ -66,6 +66,15 @@ const RadarKey kRadarKeys[] = {
    },
    "chi-square gate of tentative tracks, and of confirmed ones under the board's gate: "
    "0.9, 0.95, 0.99, 0.995 or 0.999"},
+  {"robust_noise_gain", 0.0, false, 1.0, false,
+   [](const RadarTrackerParams& p) { return p.robust_noise_gain; },
+   [](RadarTrackerParams& p, double v) { p.robust_noise_gain = v; },
+   "with the robust gate, the weight of each plot's NIS excess in a confirmed track's scale of R (0: off; "
+   "ekf-ca and imm only, the other filters refuse a gain)"},
+  {"robust_noise_max_scale", 1.0, false, kInf, false,
+   [](const RadarTrackerParams& p) { return p.robust_noise_max_scale; },
+   [](RadarTrackerParams& p, double v) { p.robust_noise_max_scale = v; },
+   "with the robust gate, the largest scale of R a confirmed track fuses with (1: off)"},
   {"confirm_m", 1.0, false, 8.0, true,
    [](const RadarTrackerParams& p) { return static_cast<double>(p.confirm_m); },
    [](RadarTrackerParams& p, double v) { p.confirm_m = static_cast<std::uint8_t>(v); },

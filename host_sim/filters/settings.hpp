@@ -8,6 +8,7 @@
 
 #include <map>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,28 @@ void apply_settings(std::span<const Setting> settings, FilterOptions& options);
 /// S1/S2 sensor and paper 000's EKF-CA), then `options.qj` and the radar
 /// keys of `options.radar`.
 RadarTrackerParams radar_tracker_params(const FilterOptions& options);
+
+/// Gives `tracker` the adaptive measurement noise keys of p
+/// (robust_noise_gain, robust_noise_max_scale) through
+/// Tracker::configure_measurement_noise(). Throws std::invalid_argument
+/// naming the keys when the tracker refuses them: a gain but 0 for a
+/// filter whose kestrel-sim tracker is built without the adaptive noise
+/// (all but ekf-ca, ekf-ca-f32, imm and imm-f32: AdaptiveMeasurementNoise
+/// needs a filter with a scaled update), or values out of range.
+template <class Tracker>
+void apply_measurement_noise(Tracker& tracker, const RadarTrackerParams& p) {
+  const Status s = tracker.configure_measurement_noise(radar_measurement_noise<typename Tracker::Scalar>(p));
+  if (s == Status::kOk) return;
+  std::string what = "robust_noise_gain " + std::to_string(p.robust_noise_gain) + ", robust_noise_max_scale " +
+                     std::to_string(p.robust_noise_max_scale) + ": refused (" + to_string(s) + "): ";
+  if constexpr (Tracker::MeasurementNoiseT::kAdapts) {
+    what += "the gain must be in [0, 1] and the max scale at least 1";
+  } else {
+    what += "this filter's tracker is built without the adaptive measurement noise (ekf-ca, ekf-ca-f32, imm and "
+            "imm-f32 have it; docs/robustness.md, \"Adaptive measurement noise\")";
+  }
+  throw std::invalid_argument(what);
+}
 
 /// Every radar tracker key with its value in p, for summary.json.
 void add_radar_parameters(const RadarTrackerParams& p, std::map<std::string, double>& parameters);

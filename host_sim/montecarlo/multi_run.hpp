@@ -98,7 +98,9 @@ std::unique_ptr<MultiTargetTracker<Filter, Associator>> make_multi_target_tracke
   gate.board_gate = true;
   apply_gate_options<double>(gate, tc);
   if (config.gate_tentative.has_value()) tc.gate_tentative = *config.gate_tentative;
-  return std::make_unique<T>(prototype, init, tc, typename T::ManagerT{}, params);
+  auto tracker = std::make_unique<T>(prototype, init, tc, typename T::ManagerT{}, params);
+  apply_measurement_noise(*tracker, p);  // built without the adaptive noise: refuses a gain
+  return tracker;
 }
 
 struct OracleLabels {

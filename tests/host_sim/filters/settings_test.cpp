@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "filters/ekf_ca.hpp"
+#include "filters/ekf_ca_rr.hpp"
 #include "filters/imm_filters.hpp"
 #include "filters/settings.hpp"
 
@@ -87,6 +88,34 @@ SCENARIO("Settings reach the radar tracker each filter builds, and its summary",
     CHECK(s.parameters.at("max_coast_misses") == 7.0);
     CHECK(s.parameters.at("gate_probability") == 0.95);
     CHECK(s.parameters.at("sigma_range_m") == 10.0);
+  }
+}
+
+SCENARIO("The adaptive noise keys reach the trackers built with it and are refused by the others", "[settings]") {
+  const FilterOptions o = with({"robust_noise_gain=0.2", "robust_noise_max_scale=9", "robust_gate_factor=25",
+                                "board_gate=true"});
+  GIVEN("EKF-CA and the IMM, which kestrel-sim builds with AdaptiveMeasurementNoise") {
+    THEN("they take the rule") {
+      const auto ekf = make_ekf_ca_tracker<float>(o);
+      CHECK(ekf.measurement_noise().enabled());
+      CHECK(ekf.measurement_noise().rule().gain == 0.2f);
+      CHECK(ekf.measurement_noise().rule().max_scale == 9.0f);
+      const auto imm = make_imm_tracker<double>(o);
+      CHECK(imm.measurement_noise().enabled());
+      CHECK(!make_imm_tracker<double>(FilterOptions{}).measurement_noise().enabled());
+    }
+  }
+  GIVEN("EKF-CA-RR, built without it") {
+    THEN("a gain is refused naming the key; a gain of 0 is not") {
+      try {
+        (void)make_ekf_ca_rr_tracker<double>(o);
+        FAIL("no refusal");
+      } catch (const std::invalid_argument& e) {
+        CHECK(std::string(e.what()).find("robust_noise_gain") != std::string::npos);
+        CHECK(std::string(e.what()).find("without the adaptive measurement noise") != std::string::npos);
+      }
+      CHECK_NOTHROW(make_ekf_ca_rr_tracker<double>(with({"robust_noise_gain=0", "robust_gate_factor=25"})));
+    }
   }
 }
 

@@ -79,7 +79,7 @@ SCENARIO("A raid run with the multi-target GNN tracker allocates nothing", "[hos
 }
 
 SCENARIO("An IMM S1 run records mode probabilities without allocating", "[host_sim][alloc][imm]") {
-  using Tracker = kestrel::host::BoardRadarTracker<kestrel::RadarImm<double>>;
+  using Tracker = kestrel::sim::SimRadarTracker<kestrel::RadarImm<double>>;  // kestrel-sim's, with the adaptive noise
   auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("s1")->generate(0).frames);
   auto tracker = std::make_unique<Tracker>(kestrel::sim::make_imm_tracker<double>(kestrel::sim::FilterOptions{}));
   kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);

@@ -10,7 +10,12 @@
 // times what the filter assumes (a burst), tracks keep taking their plots,
 // each moving the state no further than a plot on the gate's edge would,
 // instead of coasting to deletion; a gross outlier (hundreds of sigma)
-// stays outside the outer gate and cannot drag the track.
+// stays outside the outer gate and cannot drag the track. A tracker built
+// with AdaptiveMeasurementNoise (tracking/measurement_noise.hpp) may also
+// let its confirmed tracks adapt their measurement noise to their
+// innovations under this gate (association/adaptive_noise.hpp), so that a
+// burst is fused with the R it has rather than clipped plot by plot with
+// the R the model assumes.
 #pragma once
 
 #include "kestrel/filters/innovation.hpp"

@@ -321,6 +321,25 @@ class Ekf {
     }
   }
 
+  /// Innovation of z with the model's R scaled by `scale` (lambda R: the
+  /// adaptive noise of association/adaptive_noise.hpp). Pure.
+  /// @param scale lambda, > 0 and finite (status kOutOfRange or kNonFinite otherwise).
+  Innov innovation_scaled(const MeasVec& z, Scalar scale) const {
+    if (!ScalarTraits<Scalar>::is_finite(scale)) return Innov{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kNonFinite};
+    if (!(scale > Scalar(0))) return Innov{MeasVec::Zero(), MeasCov::Zero(), Scalar(0), Status::kOutOfRange};
+    return innovation(z, MeasCov(scale * measurement_.noise()));
+  }
+
+  /// Update with z and the model's R scaled by `scale` (lambda R).
+  /// @param scale lambda, > 0 and finite.
+  /// @return kOk; kOutOfRange (scale not > 0); kNonFinite or
+  ///         kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update_scaled(const MeasVec& z, Scalar scale) {
+    if (!ScalarTraits<Scalar>::is_finite(scale)) return fail(Status::kNonFinite);
+    if (!(scale > Scalar(0))) return fail(Status::kOutOfRange);
+    return update(z, MeasCov(scale * measurement_.noise()));
+  }
+
   /// Update with z and an explicit R (see kForm and the header comment).
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R) {

@@ -263,14 +263,13 @@ class Imm {
     CommonCov Pc;
     lift<Layout, kStateDim>(output.x(), output.P(), xc, Pc);
     Modes modes = modes_;
-    const Status s = for_each_mode([&](auto j) {
+    KESTREL_TRY(for_each_mode([&](auto j) {
       constexpr int kJ = decltype(j)::value;
       typename Mode<kJ>::State xj;
       typename Mode<kJ>::Cov Pj;
       project<typename Mode<kJ>::Layout, Mode<kJ>::kStateDim>(xc, Pc, xj, Pj);
       return std::get<kJ>(modes).reset(xj, Pj);
-    });
-    if (s != Status::kOk) return s;
+    }));
     modes_ = modes;
     output_ = output;
     xc_ = xc;
@@ -301,7 +300,8 @@ class Imm {
     lift_modes(modes_, X, PX);
 
     Modes modes = modes_;
-    const Status s = for_each_mode([&](auto j) {
+    // (named: the macro inside the lambda would shadow the outer one's status)
+    const Status predicted = for_each_mode([&](auto j) {
       constexpr int kJ = decltype(j)::value;
       // Step 2: the mixed initial condition of mode j, in the common state.
       CommonState x0 = CommonState::Zero();
@@ -318,7 +318,7 @@ class Imm {
       KESTREL_TRY(mode.reset(xj, Pj));
       return mode.predict(dt);
     });
-    if (s != Status::kOk) return s;
+    KESTREL_TRY(predicted);
     return commit(modes, floored(c), mixing);
   }
 
@@ -334,43 +334,26 @@ class Imm {
     return output_.predicted_measurement();
   }
 
+  /// Innovation of z against the combined prediction with every R scaled
+  /// by `scale` (lambda R, association/adaptive_noise.hpp). Pure.
+  Innov innovation_scaled(const MeasVec& z, Scalar scale) const { return output_.innovation_scaled(z, scale); }
+
   /// Mode-conditioned updates with z, mode probability update and
   /// combination.
   /// @return kOk; kNonFinite or kNotPositiveDefinite (z, a mode's
   ///         innovation or update, or the combined covariance); the filter
   ///         is unchanged on any refusal.
-  [[nodiscard]] Status update(const MeasVec& z) {
+  [[nodiscard]] Status update(const MeasVec& z) { return fuse<false>(z, Scalar(1)); }
+
+  /// update(z) with every mode's R (and the combined innovation's) scaled
+  /// by `scale`: the mode likelihoods then use lambda R as well.
+  /// @param scale lambda, > 0 and finite.
+  /// @return as update(z); kOutOfRange (scale not > 0).
+  [[nodiscard]] Status update_scaled(const MeasVec& z, Scalar scale) {
     diag_.fused = false;
-    if (!all_finite(z)) return fail(Status::kNonFinite);
-    const Innov combined = output_.innovation(z);
-    if (combined.status != Status::kOk) return fail(combined.status);
-
-    Modes modes = modes_;
-    Probabilities log_posterior;
-    const Status s = for_each_mode([&](auto j) {
-      constexpr int kJ = decltype(j)::value;
-      auto& mode = std::get<kJ>(modes);
-      const auto inn = mode.innovation(z);
-      if (inn.status != Status::kOk) return inn.status;
-      Scalar log_det(0);
-      if (!log_det_spd(inn.S, log_det)) return Status::kNotPositiveDefinite;
-      // Step 3's likelihood in logs (the 2 pi term is common to all modes
-      // and dropped), plus ln c_j: the numerator of step 4.
-      log_posterior(kJ) = -(inn.d2 + log_det) / Scalar(2) + ScalarTraits<Scalar>::log(mu_(kJ));
-      return mode.update(z);
-    });
-    if (s != Status::kOk) return fail(s);
-    if (!all_finite(log_posterior)) return fail(Status::kNonFinite);
-
-    // Step 4, shifted by the largest term before exp, so the
-    // largest weight is exactly 1 and the sum is in [1, kModes].
-    const Scalar top = log_posterior.maxCoeff();
-    Probabilities w;
-    for (int j = 0; j < kModes; ++j) w(j) = ScalarTraits<Scalar>::exp(log_posterior(j) - top);
-    KESTREL_TRY_OR(fail, commit(modes, floored(w), mixing_));
-    log_likelihood_ = log_posterior;
-    diag_.fused_all(combined.nu, combined.S.diagonal(), combined.d2);
-    return Status::kOk;
+    if (!ScalarTraits<Scalar>::is_finite(scale)) return fail(Status::kNonFinite);
+    if (!(scale > Scalar(0))) return fail(Status::kOutOfRange);
+    return fuse<true>(z, scale);
   }
 
   /// Combined estimate on Output's state (what the tracker reports).
@@ -494,6 +477,46 @@ class Imm {
     Pc_ = Pc;
     mu_ = mu;
     mixing_ = mixing;
+    return Status::kOk;
+  }
+
+  /// update()'s cycle (steps 3-5) with R, or with lambda R when kScaled.
+  template <bool kScaled>
+  [[nodiscard]] Status fuse(const MeasVec& z, [[maybe_unused]] Scalar scale) {
+    diag_.fused = false;
+    if (!all_finite(z)) return fail(Status::kNonFinite);
+    const Innov combined = kScaled ? output_.innovation_scaled(z, scale) : output_.innovation(z);
+    KESTREL_TRY_OR(fail, combined.status);
+    Modes modes = modes_;
+    Probabilities log_posterior;
+    // (named: the macro inside the lambda would shadow the outer one's status)
+    const Status fused = for_each_mode([&](auto j) {
+      constexpr int kJ = decltype(j)::value;
+      auto& mode = std::get<kJ>(modes);
+      const auto inn = kScaled ? mode.innovation_scaled(z, scale) : mode.innovation(z);
+      KESTREL_TRY(inn.status);
+      Scalar log_det(0);
+      if (!log_det_spd(inn.S, log_det)) return Status::kNotPositiveDefinite;
+      // Step 3's likelihood in logs (the 2 pi term is common to all modes
+      // and dropped), plus ln c_j: the numerator of step 4.
+      log_posterior(kJ) = -(inn.d2 + log_det) / Scalar(2) + ScalarTraits<Scalar>::log(mu_(kJ));
+      if constexpr (kScaled) {
+        return mode.update_scaled(z, scale);
+      } else {
+        return mode.update(z);
+      }
+    });
+    KESTREL_TRY_OR(fail, fused);
+    if (!all_finite(log_posterior)) return fail(Status::kNonFinite);
+
+    // Step 4, shifted by the largest term before exp, so the
+    // largest weight is exactly 1 and the sum is in [1, kModes].
+    const Scalar top = log_posterior.maxCoeff();
+    Probabilities w;
+    for (int j = 0; j < kModes; ++j) w(j) = ScalarTraits<Scalar>::exp(log_posterior(j) - top);
+    KESTREL_TRY_OR(fail, commit(modes, floored(w), mixing_));
+    log_likelihood_ = log_posterior;
+    diag_.fused_all(combined.nu, combined.S.diagonal(), combined.d2);
     return Status::kOk;
   }
 

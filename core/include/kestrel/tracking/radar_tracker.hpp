@@ -33,6 +33,19 @@ struct RadarTrackerParams {
   /// target's is missing. 25 (5 gate radii) suits a sensor without clutter
   /// whose noise may grow 5-fold for a while (docs/robustness.md).
   double robust_gate_factor = 0.0;
+  /// With the robust gate on, confirmed tracks fuse with lambda R, lambda
+  /// in [1, robust_noise_max_scale] following each track's NIS with this
+  /// weight per plot (AdaptiveMeasurementNoise, association/adaptive_noise.hpp).
+  /// Only a tracker built with AdaptiveMeasurementNoise honours it, through
+  /// configure_measurement_noise(radar_measurement_noise<Scalar>(p)); one
+  /// built without it (make_radar_tracker(), every board's) refuses any
+  /// value but 0 there with kOutOfRange, and make_radar_tracker() does not
+  /// read it. 0, off, by default: a filter that lags a manoeuvre (EKF-CA at
+  /// qj 1.6 on S1) reads its lag as noise and lags further. 0.2 suits the
+  /// IMM (docs/robustness.md).
+  double robust_noise_gain = 0.0;
+  /// lambda's upper bound: R up to this factor (sigma up to its root).
+  double robust_noise_max_scale = 16.0;
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
   std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
   std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
@@ -53,6 +66,23 @@ template <class Filter, std::size_t kMaxTracks, std::size_t kMaxPlots>
 using RadarTracker =
     Tracker<Filter, TwoPointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
             kMaxTracks, kMaxPlots>;
+
+/// The radar tracker with adaptive measurement noise
+/// (AdaptiveMeasurementNoise): a compile-time choice, for a filter with a
+/// scaled update (EkfCa, RadarImm). Give it its rule with
+/// configure_measurement_noise(radar_measurement_noise<Scalar>(p)).
+template <class Filter, std::size_t kMaxTracks, std::size_t kMaxPlots>
+using AdaptiveRadarTracker =
+    Tracker<Filter, TwoPointInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
+            kMaxTracks, kMaxPlots, NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
+
+/// p's adaptive noise rule (robust_noise_gain, robust_noise_max_scale) in
+/// the tracker's scalar, for Tracker::configure_measurement_noise().
+template <class Scalar>
+constexpr MeasurementNoiseParams<Scalar> radar_measurement_noise(const RadarTrackerParams& p) {
+  using T = ScalarTraits<Scalar>;
+  return {T::from_double(p.robust_noise_gain), T::from_double(p.robust_noise_max_scale)};
+}
 
 /// The real-valued parameters in the tracker's scalar. For a fixed-point
 /// board, build them in a constant expression,

@@ -15,6 +15,10 @@
 //                ProbabilisticDataAssociation);
 //   Manager      when a track is confirmed, deleted or restarted (MOfN,
 //                SequentialLlr, ReacquireWhenLost);
+//   MeasurementNoise  the R confirmed tracks fuse with: as modelled
+//                (NominalMeasurementNoise, the default: no state, no code)
+//                or adapted per track under the robust gate
+//                (AdaptiveMeasurementNoise, tracking/measurement_noise.hpp);
 //   capacities   kMaxTracks and kMaxMeasurements.
 // The tracker keeps what they share: validation, time, the gates, the
 // track table, the health rules below, statistics and reports.
@@ -66,6 +70,7 @@
 #include "kestrel/tracking/elapsed.hpp"
 #include "kestrel/tracking/frame_clock.hpp"
 #include "kestrel/tracking/m_of_n.hpp"
+#include "kestrel/tracking/measurement_noise.hpp"
 #include "kestrel/tracking/measurement_scan.hpp"
 #include "kestrel/tracking/track.hpp"
 #include "kestrel/tracking/track_table.hpp"
@@ -110,6 +115,16 @@ concept FilterStartingInitiator = requires(I& i, F& f, const typename F::MeasVec
 template <class F>
 concept PredictsMeasurement = requires(const F& f, const typename F::MeasVec& z) {
   { f.predicted_measurement().distance(z) } -> std::same_as<PlotDistance<typename F::Scalar>>;
+};
+
+/// A filter that fuses a plot with its model's R scaled by a factor (Ekf,
+/// Imm): what a track's adaptive measurement noise needs
+/// (AdaptiveMeasurementNoise, association/adaptive_noise.hpp).
+template <class F>
+concept ScalesMeasurementNoise = requires(F& f, const F& cf, const typename F::MeasVec& z,
+                                          typename F::Scalar s) {
+  { cf.innovation_scaled(z, s) } -> std::same_as<Innovation<typename F::Scalar, F::kMeasDim>>;
+  { f.update_scaled(z, s) } -> std::same_as<Status>;
 };
 
 /// A filter that can fold several plots in at once with association
@@ -183,7 +198,8 @@ struct StepStats {
 
 template <TrackingFilter Filter, class Initiator, std::size_t kMaxTracks, std::size_t kMaxMeasurements,
           template <class, std::size_t, std::size_t> class Associator = NearestNeighbour,
-          template <class> class Manager = MOfN>
+          template <class> class Manager = MOfN,
+          template <class, std::size_t> class MeasurementNoise = NominalMeasurementNoise>
 class Tracker {
  public:
   using Scalar = typename Filter::Scalar;
@@ -200,7 +216,10 @@ class Tracker {
   using AssociatorT = Associator<Scalar, kMaxTracks, kMaxMeasurements>;
   using AssociatorParams = typename AssociatorT::Params;
   using ManagerT = Manager<Scalar>;
+  using MeasurementNoiseT = MeasurementNoise<Scalar, kMaxTracks>;
   static_assert(kMaxMeasurements < 32768, "measurement indices are int16");
+  static_assert(!MeasurementNoiseT::kAdapts || (ScalesMeasurementNoise<Filter> && !ChannelFilter<Filter>),
+                "AdaptiveMeasurementNoise needs a filter that fuses with a scaled R (ScalesMeasurementNoise)");
 
   /// @param prototype  a filter holding the model parameters every track copies.
   /// @param manager    the track manager with its own parameters (MOfN reads
@@ -338,6 +357,28 @@ class Tracker {
     std::size_t count_ = 0;
   };
 
+  /// The adaptive measurement noise's rule (robust_noise_gain and
+  /// robust_noise_max_scale), for a tracker built with
+  /// AdaptiveMeasurementNoise; it acts on confirmed tracks under the robust
+  /// gate (config.robust_gate_factor) and is off without it. Call before
+  /// the first step.
+  /// @return kOk; kOutOfRange (a gain but 0 on a tracker built without the
+  ///         adaptive noise, NominalMeasurementNoise; a gain outside [0, 1]
+  ///         or a max scale below 1); kNonFinite. The tracker is unchanged
+  ///         on any refusal.
+  [[nodiscard]] Status configure_measurement_noise(const MeasurementNoiseParams<Scalar>& p) {
+    KESTREL_TRY(MeasurementNoiseT::check(p));
+    if constexpr (MeasurementNoiseT::kAdapts) {
+      // A plot's NIS counts up to the chi-square gate, as a clipped plot does.
+      measurement_noise_.configure(p, robust_confirmed_.inner);
+    }
+    return Status::kOk;
+  }
+
+  /// The measurement noise policy's state (AdaptiveMeasurementNoise: each
+  /// slot's lambda and the last frame's count of scaled updates).
+  const MeasurementNoiseT& measurement_noise() const { return measurement_noise_; }
+
   /// Process one frame.
   /// @return kOk; kMalformedFrame (count over capacity); kNonFinite; kOutOfRange
   ///         (a measurement outside [z_min, z_max]); kTimeWentBackwards;
@@ -348,6 +389,7 @@ class Tracker {
   [[nodiscard]] Status step(const Scan& scan) {
     stats_ = StepStats{};
     report_count_ = 0;
+    if constexpr (MeasurementNoiseT::kAdapts) measurement_noise_.begin_frame();
     Status valid = validate(scan);
     if (valid == Status::kOk) valid = clock_.check(scan.t_us);
     bool resync = false;
@@ -392,6 +434,8 @@ class Tracker {
   const Table& tracks() const { return table_; }
   const Config& config() const { return config_; }
   const Initiator& initiator() const { return initiator_; }
+  /// The filter every new track copies (its models and parameters).
+  const Filter& prototype_filter() const { return prototype_.filter; }
   /// Frames refused so far, per status.
   std::uint32_t rejected(Status s) const { return rejected_[static_cast<std::size_t>(s)]; }
   /// Restarts on a new clock so far (header comment).
@@ -548,6 +592,14 @@ class Tracker {
                bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     if (slot >= kMaxTracks || j >= scan.count || used[j] || hit[slot]) return;  // associator contract
     TrackT& tr = table_[slot];
+    if constexpr (MeasurementNoiseT::kAdapts) {
+      // Confirmed tracks under the robust gate (the only pass with an
+      // inner gate) fuse with lambda R.
+      if (robust.inner > Scalar(0) && measurement_noise_.enabled()) {
+        fold_in_scaled(slot, scan, j, in, robust, used, hit, drop);
+        return;
+      }
+    }
     const bool clipped = robust.clips(in);
     const Status s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
     if (s != Status::kOk) {
@@ -572,6 +624,51 @@ class Tracker {
       // Against the gate that decides a plain update: over 1 means clipped.
       tr.test_ratio = in.d2 / (robust.inner > Scalar(0) ? robust.inner : gate.threshold);
     }
+    hit[slot] = true;
+    tr.associated = true;
+    manager_.hit(tr, in);
+    ++stats_.associated;
+    if (clipped) ++stats_.clipped;
+  }
+
+  /// fold_in() with the track's lambda R (AdaptiveMeasurementNoise): the
+  /// plot is tested against the robust gate and fused against lambda R (the
+  /// association measured it against R), then lambda follows its NIS.
+  void fold_in_scaled(std::size_t slot, const Scan& scan, std::size_t j, const Innov& in,
+                      const RobustGate<Scalar, kMeasDim>& robust, bool (&used)[kMaxMeasurements],
+                      bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks])
+    requires MeasurementNoiseT::kAdapts
+  {
+    TrackT& tr = table_[slot];
+    const Scalar scale = measurement_noise_.scale(slot);
+    Scalar fused_d2 = in.d2;  // the plot's NIS against the S it is fused with
+    bool clipped = false;
+    Status s = Status::kOk;
+    if (scale > Scalar(1)) {
+      const Innov fused = tr.filter.innovation_scaled(scan.z[j], scale);
+      fused_d2 = fused.d2;
+      clipped = robust.clips(fused);
+      s = tr.filter.update_scaled(clipped ? robust.shrink(scan.z[j], fused) : scan.z[j], scale);
+    } else {
+      clipped = robust.clips(in);
+      s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
+    }
+    if (s != Status::kOk) {
+      ++stats_.filter_failures;
+      note_failure(s);
+      if (s == Status::kNotPositiveDefinite) {  // the track's P, not the plot: the plot stays free
+        drop[slot] = true;
+        ++stats_.unhealthy;
+      }
+      return;
+    }
+    used[j] = true;
+    tr.measurement_index = static_cast<std::int16_t>(j);
+    tr.nis = in.d2;
+    // Against the gate that decides a plain update: over 1 means clipped.
+    tr.test_ratio = fused_d2 / robust.inner;
+    // misses is still the previous frame's: 0 after a hit.
+    measurement_noise_.after_plot(slot, scale, fused_d2, kMeasDim, tr.misses == 0);
     hit[slot] = true;
     tr.associated = true;
     manager_.hit(tr, in);
@@ -724,6 +821,7 @@ class Tracker {
       tr.associated = true;
       tr.measurement_index = static_cast<std::int16_t>(j);
       manager_.start(tr);
+      if constexpr (MeasurementNoiseT::kAdapts) measurement_noise_.start(slot);
       if constexpr (FilterStartingInitiator<Initiator, Filter>) {
         tr.filter = started_filter;
         tr.initialised = true;
@@ -845,6 +943,7 @@ class Tracker {
       tr.nis = tr.filter.diagnostics().nis;
       tr.test_ratio = Scalar(0);
       manager_.start(tr);
+      if constexpr (MeasurementNoiseT::kAdapts) measurement_noise_.start(slot);
       ++stats_.restarted;
     } else {
       (void)tr;
@@ -892,6 +991,9 @@ class Tracker {
   StepStats stats_{};
   std::uint32_t rejected_[kStatusCount] = {};
   FrameClock clock_{};
+  /// Empty for NominalMeasurementNoise: the tracker's layout is then that of
+  /// a tracker without the policy.
+  [[no_unique_address]] MeasurementNoiseT measurement_noise_{};
 };
 
 }  // namespace kestrel
