@@ -59,7 +59,8 @@ void apply_measurement_noise(Tracker& tracker, const RadarTrackerParams& p) {
   std::string what = "robust_noise_gain " + std::to_string(p.robust_noise_gain) + ", robust_noise_max_scale " +
                      std::to_string(p.robust_noise_max_scale) + ": refused (" + to_string(s) + "): ";
   if constexpr (Tracker::MeasurementNoiseT::kAdapts) {
-    what += "the gain must be in [0, 1] and the max scale at least 1";
+    what += "the gain must be in [0, 1] and the max scale at least 1, and a gain acts only under the robust gate "
+            "(robust_gate_factor > 1, --robust-gate)";
   } else {
     what += "this filter's tracker is built without the adaptive measurement noise (ekf-ca, ekf-ca-f32, imm and "
             "imm-f32 have it; docs/robustness.md, \"Adaptive measurement noise\")";

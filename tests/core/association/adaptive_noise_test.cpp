@@ -304,6 +304,15 @@ TEMPLATE_TEST_CASE("Scenario: a tracker without the adaptive noise refuses a gai
       CHECK(tracker.configure_measurement_noise({S(0.2), S(16)}) == Status::kOk);
     }
   }
+  GIVEN("a tracker built with it but without the robust gate") {
+    p.robust_gate_factor = 0.0;
+    const auto nominal = kestrel::make_radar_tracker<S, 16, 32>(p);
+    Adaptive tracker(nominal.prototype_filter(), nominal.initiator(), nominal.config());
+    THEN("a gain, which could not act, is refused; a gain of 0 is accepted") {
+      CHECK(tracker.configure_measurement_noise({S(0.2), S(16)}) == Status::kOutOfRange);
+      CHECK(tracker.configure_measurement_noise({S(0), S(16)}) == Status::kOk);
+    }
+  }
   GIVEN("a burst, tracked by the nominal tracker and by the adaptive one with a gain of 0") {
     auto nominal = kestrel::make_radar_tracker<S, 16, 32>(p);
     Adaptive adaptive(nominal.prototype_filter(), nominal.initiator(), nominal.config());

@@ -363,12 +363,15 @@ class Tracker {
   /// gate (config.robust_gate_factor) and is off without it. Call before
   /// the first step.
   /// @return kOk; kOutOfRange (a gain but 0 on a tracker built without the
-  ///         adaptive noise, NominalMeasurementNoise; a gain outside [0, 1]
-  ///         or a max scale below 1); kNonFinite. The tracker is unchanged
+  ///         adaptive noise, NominalMeasurementNoise, or without the robust
+  ///         gate; a gain outside [0, 1] or a max scale below 1); kNonFinite.
+  ///         The tracker is unchanged
   ///         on any refusal.
   [[nodiscard]] Status configure_measurement_noise(const MeasurementNoiseParams<Scalar>& p) {
     KESTREL_TRY(MeasurementNoiseT::check(p));
     if constexpr (MeasurementNoiseT::kAdapts) {
+      // Without the robust gate the rule would not act: refused, not ignored.
+      if (p.gain > Scalar(0) && !(robust_confirmed_.inner > Scalar(0))) return Status::kOutOfRange;
       // A plot's NIS counts up to the chi-square gate, as a clipped plot does.
       measurement_noise_.configure(p, robust_confirmed_.inner);
     }
