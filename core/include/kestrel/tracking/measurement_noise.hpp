@@ -15,8 +15,9 @@
 // Its parameters (MeasurementNoiseParams: robust_noise_gain and
 // robust_noise_max_scale of RadarTrackerParams) are given through
 // Tracker::configure_measurement_noise(), which a tracker built with the
-// nominal policy refuses with kOutOfRange for any gain but 0: a value the
-// tracker cannot honour is never dropped silently. A board opts in by
+// nominal policy refuses with kOutOfRange for any gain but 0, as the
+// adaptive one does without the robust gate: a value the tracker cannot
+// honour is never dropped silently. A board opts in by
 // naming the policy in its tracker type (docs/robustness.md, "Adaptive
 // measurement noise"); nothing is decided at run time.
 #pragma once

@@ -360,13 +360,12 @@ class Tracker {
   /// The adaptive measurement noise's rule (robust_noise_gain and
   /// robust_noise_max_scale), for a tracker built with
   /// AdaptiveMeasurementNoise; it acts on confirmed tracks under the robust
-  /// gate (config.robust_gate_factor) and is off without it. Call before
-  /// the first step.
+  /// gate (config.robust_gate_factor), so a gain without that gate is
+  /// refused. Call before the first step.
   /// @return kOk; kOutOfRange (a gain but 0 on a tracker built without the
   ///         adaptive noise, NominalMeasurementNoise, or without the robust
   ///         gate; a gain outside [0, 1] or a max scale below 1); kNonFinite.
-  ///         The tracker is unchanged
-  ///         on any refusal.
+  ///         The tracker is unchanged on any refusal.
   [[nodiscard]] Status configure_measurement_noise(const MeasurementNoiseParams<Scalar>& p) {
     KESTREL_TRY(MeasurementNoiseT::check(p));
     if constexpr (MeasurementNoiseT::kAdapts) {
