@@ -220,7 +220,10 @@ TEMPLATE_TEST_CASE("Scenario: inside the tracker the noise scale adapts only wit
     using Adaptive = kestrel::AdaptiveRadarTracker<kestrel::EkfCa<S>, 16, 32>;
     const auto nominal = kestrel::make_radar_tracker<S, 16, 32>(p);
     Adaptive tracker(nominal.prototype_filter(), nominal.initiator(), nominal.config());
-    REQUIRE(tracker.configure_measurement_noise(kestrel::radar_measurement_noise<S>(p)) == Status::kOk);
+    // Without the robust gate a gain could not act: it is refused and the
+    // tracker keeps R as modelled.
+    const Status expected = gain > 0.0 && robust_gate_factor <= 1.0 ? Status::kOutOfRange : Status::kOk;
+    REQUIRE(tracker.configure_measurement_noise(kestrel::radar_measurement_noise<S>(p)) == expected);
     std::mt19937 rng(21);
     struct Outcome {
       double largest = 1.0, last = 1.0;
@@ -261,7 +264,7 @@ TEMPLATE_TEST_CASE("Scenario: inside the tracker the noise scale adapts only wit
       CHECK(on.allocations == 0);
     }
   }
-  GIVEN("the adaptive noise off or the robust gate off") {
+  GIVEN("the adaptive noise off, or a gain refused without the robust gate") {
     const auto no_gain = run(25.0, 0.0);
     const auto no_robust = run(0.0, 0.2);
     THEN("every track fuses with R as modelled") {
@@ -273,7 +276,7 @@ TEMPLATE_TEST_CASE("Scenario: inside the tracker the noise scale adapts only wit
   }
 }
 
-TEMPLATE_TEST_CASE("Scenario: a tracker without the adaptive noise refuses a gain; with a gain of 0 the adaptive one is the nominal one",
+TEMPLATE_TEST_CASE("Scenario: a tracker without the adaptive noise refuses a gain and with a gain of 0 the adaptive one is the nominal one",
                    "[adaptive_noise][tracker]", double, float) {
   using S = TestType;
   using Nominal = kestrel::RadarTracker<kestrel::EkfCa<S>, 16, 32>;

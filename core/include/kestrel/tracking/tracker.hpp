@@ -636,11 +636,13 @@ class Tracker {
   /// fold_in() with the track's lambda R (AdaptiveMeasurementNoise): the
   /// plot is tested against the robust gate and fused against lambda R (the
   /// association measured it against R), then lambda follows its NIS.
+  /// (A member template, so that an explicit instantiation of a nominal
+  /// tracker instantiates no body: clang 14 ignores the constraint there.)
+  template <class Noise = MeasurementNoiseT>
+    requires Noise::kAdapts
   void fold_in_scaled(std::size_t slot, const Scan& scan, std::size_t j, const Innov& in,
                       const RobustGate<Scalar, kMeasDim>& robust, bool (&used)[kMaxMeasurements],
-                      bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks])
-    requires MeasurementNoiseT::kAdapts
-  {
+                      bool (&hit)[kMaxTracks], bool (&drop)[kMaxTracks]) {
     TrackT& tr = table_[slot];
     const Scalar scale = measurement_noise_.scale(slot);
     Scalar fused_d2 = in.d2;  // the plot's NIS against the S it is fused with
