@@ -1,67 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Extended Kalman filter on fixed-size storage (docs/filters.md; paper 000
-// section 2-1 and paper 001 section 2 for the equations). The dense update
-// uses the Joseph form P+ = (I - K H) P (I - K H)^T + K R K^T, then
-// symmetrises; the structured update (below) computes the same matrix as
-// P - U U^T. With a linear motion and measurement model it is exactly the
-// linear Kalman filter.
-//
-// Every public operation computes into locals and commits only on success:
-// a non-finite input or result returns kNonFinite, a failed Cholesky of S
-// or a P that is not positive definite (math/positive_definite.hpp, checked
-// on every P before it is committed) returns kNotPositiveDefinite, and in
-// every case x and P are unchanged.
-// The explicit-Q / explicit-R overloads are what adaptive filters (R2-AEKF)
-// build on, so no adaptive filter copies this update; update(z, R, keep)
-// fuses a subset of the channels (a channel gate's choice, paper 003) with
-// the same arithmetic.
-//
-// Two update forms, chosen at compile time (kForm; the default follows the
-// scalar). kBatch is the Cholesky of S above. kSequentialWhitened is the one
-// a fixed-point scalar needs, where S^-1 over- or underflows (its entries
-// span 1e-5 rad^2 to 1e4 m^2): R = L L^T is factored, each row of H and the
-// residual are scaled by L^-1 (unit, independent noise per channel), and
-// the channels are folded in one at a time as scalar updates whose divisor
-// s = h P h^T + 1 is >= 1. Each channel's residual is corrected by the
-// earlier channels' state change, h (x - x_pred), so every channel is
-// linearised at the prediction and the result equals the batch update; the
-// scalar Joseph form P - K PHt^T - PHt K^T + s K K^T keeps P symmetric.
-// The NIS is the sum of the channels' nu_i^2 / s_i; innovation() gets the
-// same value from an LDL^T of the whitened S (divisors >= 1 again).
-//
-// Model structure (kestrel/filters/structure.hpp; docs/performance.md) is used when the
-// models expose it, detected at compile time, in every scalar: a
-// block-diagonal motion model gets F P F^T and Q per axis block; a
-// measurement model with few non-zero Jacobian columns gets P H^T and
-// H P H^T from those columns, one linearisation (h(x), the Jacobian
-// columns, H P H^T) shared by every innovation() and the update until x or
-// P changes, and the update through the Cholesky factor of S = L L^T:
-// U = P H^T L^-T, w = L^-1 nu, x+ = x + U w, P+ = P - U U^T on the upper
-// triangle, mirrored, NIS = |w|^2 (neither S^-1 nor K is formed). The
-// sequential whitened form takes the same route on the whitened channels:
-// folding channel j in divides by s_j = Ls(j, j)^2 with S_w = Hw P Hw^T + I
-// = Ls Ls^T, and its gain column is column j of U = P Hw^T Ls^-T, so the
-// channels together are x + U w, P - U U^T with w = Ls^-1 Lr^-1 nu
-// (R = Lr Lr^T factored once per model). Both factors carry the
-// reciprocals of their diagonals, so a plot's distance and the update
-// multiply instead of divide: a fixed-point division is a 64-step loop,
-// and the whitened diagonal is >= 1. Without the structure (or with
-// Dense<M> models) the dense products below run, Joseph form included: the
-// baseline and the test oracle, equal to the structured path to 1e-9
-// relative in double.
-//
-// Why P - U U^T and not the Joseph form on the structured path: the
-// Joseph form's protection is the product (I - K H) P (I - K H)^T, positive
-// semi-definite by construction and first-order insensitive to an error in
-// K. The product costs two 6x6 triple products; expanded to be cheap
-// (P - K PHt^T - PHt K^T + K S K^T) it is no longer a product, so the
-// positive-semi-definiteness by construction is gone, and what remains, the
-// insensitivity to K, only matters for a gain off by more than round-off
-// (fixed or suboptimal gains), which no filter here uses. P - U U^T has the
-// same round-off class and half the work. Measured, float against a double
-// reference over long CA-2D/polar runs with very precise plots
-// (docs/performance.md, "Update form"), the two forms stay equally close
-// to the reference.
+// Extended Kalman filter on fixed-size storage (paper 000 section 2-1 and
+// paper 001 section 2); with a linear motion and measurement model it is
+// exactly the linear Kalman filter. Every operation computes into locals and
+// commits only on success: kNonFinite or kNotPositiveDefinite (a failed
+// Cholesky of S, or a P that math/positive_definite.hpp refuses) leave x and
+// P unchanged. The update form is chosen at compile time (kForm): the batch
+// Joseph form, or the sequential whitened channels a fixed-point scalar needs;
+// models that expose structure (filters/structure.hpp) take P - U U^T through
+// the Cholesky factor of S instead. The explicit-Q/R and channel-subset
+// (paper 003) overloads are what the adaptive and channel-gated filters build
+// on. Forms and why: docs/filters.md, "EKF: update forms and model
+// structure"; docs/performance.md, "Update form".
 #pragma once
 
 #include <concepts>

@@ -1,62 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Sigma points, their weights and their statistics: the point sets that the
-// sigma-point filters (filters/sigma_point_filter.hpp, plain;
-// filters/sr_sigma_point_filter.hpp, square root) take as a template
-// parameter (docs/filters.md; paper 001 section 3.2-3.3 and tables 2-5, which
-// follow van der Merwe 2004, "Sigma-point Kalman filters for probabilistic
-// inference in dynamic state-space models", PhD thesis, OGI, sections
-// 3.2-3.4 and algorithms 8-11). A point set owns its weights and how the
-// transform's covariance and cross-covariance are formed from the points,
-// in the plain and the square-root form; the filters own drawing,
-// propagating, means, gains, status and commit-on-success. A new point set
-// is one more struct here with the members UnscentedPoints has.
-//
-// One symmetric set of 2n + 1 points for both families (compile-time count):
-//   X_0 = x,  X_i = x + c L_i,  X_(n+i) = x - c L_i  (i = 1..n),
-// with L a lower-triangular square root of P (P = L L^T) and c the spread:
-// c = sqrt(n + lambda) for the scaled unscented transform
-// (lambda = alpha^2 (n + kappa) - n) and c = h for the central difference
-// (Stirling) interpolation.
-//
-// Angles. A mean over points whose bearings straddle +-pi must not be the
-// plain weighted sum (two points at +179 and -179 deg average to 0). Every
-// mean here is taken in reference form,
-//   z_bar = Z_0 + sum_(i>=1) w_i residual(Z_i, Z_0),
-// which equals sum_i w_i Z_i because the weights sum to one, and every
-// deviation goes through the model's residual(), so the one place that wraps
-// a bearing (the measurement model's residual) also makes sigma-point means
-// and covariances wrap-safe; no model needs an extra hook. A model without
-// angles has residual(z, zh) = z - zh, which inlines to the same arithmetic
-// as a plain weighted sum written about X_0, so it pays nothing. z_bar may
-// fall just outside (-pi, pi]; nothing uses it except through residual().
-// States are assumed to hold no angle (true of CA-2D, CV-2D, CV-3D, CT-2D):
-// their deviations are plain differences.
-//
-// Affine motion. A BlockDiagonalMotion model (filters/structure.hpp)
-// has the Jacobian blkdiag(F1(dt), ...), independent of x, so its f is
-// affine: f(x) = F x + c. The time update of every filter here then has a
-// closed form, equal to the sigma-point one in exact arithmetic:
-//   - the mean: sum_i Wm_i (F X_i + c) = F x + c = f(x), the weights summing
-//     to one and the points being symmetric about x;
-//   - unscented: Y_0 - x- = F x + c - f(x) = 0, so the Wc_0 term vanishes,
-//     and Y_(i) - x- = +-c F L_i, so sum_(i>=1) W_i (Y_i - x-)(Y_i - x-)^T
-//     = 2 W_i c^2 F L L^T F^T = F P F^T (2 W_i c^2 = 1);
-//   - central difference: Y_i - Y_(n+i) = 2h F L_i gives Wc1 4h^2 F L L^T F^T
-//     = F P F^T (Wc1 = 1/(4h^2)), and the second-order terms
-//     Y_i + Y_(n+i) - 2 Y_0 = F (X_i + X_(n+i) - 2x) = 0 vanish;
-//   - square root: qr{[F Sx, sqrt(Q)]} is a factor of F Sx Sx^T F^T + Q, the
-//     same P- (and the SR-UKF's rank-1 update by Y_0 - x- = 0 is void).
-// So with such a model the filters take P- = F P F^T + Q (structure.hpp's
-// per-axis kernels) or Sx- = qr{[F Sx, sqrt(Q)]} (affine_sqrt() below, the
-// triangularisation on the compound matrix's block profile in
-// sqrt_time_update.hpp) and x- = f(x), and draw no points for the time
-// update: 2n + 1 propagations, a Cholesky of P and 2n + 1 outer products
-// (or a wider QR) saved. With the model's own Q = blkdiag(Q1, ...) (predict(dt)),
-// Q is added, or factored, per axis block too. The
-// results differ from the point form by round-off only (tested to 1e-9
-// relative against Dense<M>, tests/core/filters/structured_sigma_*). The
-// measurement update keeps its points (h is not affine) but skips
-// evaluating h at the points it cannot tell from x (measure_drawn()).
+// Sigma points, their weights and their statistics (paper 001 sections
+// 3.2-3.3 and tables 2-5, after van der Merwe 2004, "Sigma-point Kalman
+// filters for probabilistic inference in dynamic state-space models",
+// sections 3.2-3.4 and algorithms 8-11): the point sets the plain and the
+// square-root sigma-point filters take as a template parameter. A point set
+// owns its weights and how the covariance, cross-covariance and their square
+// roots are formed from the symmetric 2n + 1 points; the filters own drawing,
+// propagation, gains and commit-on-success. Every mean is taken in reference
+// form through the model's residual(), so bearings are wrap-safe; with an
+// affine (block-diagonal) motion model the time update has a closed form.
+// Why and how: docs/filters.md, "Sigma points and angles", "One filter per
+// form, one point set per rule" and "Why the affine time update is exact".
 #pragma once
 
 #include "kestrel/assert.hpp"

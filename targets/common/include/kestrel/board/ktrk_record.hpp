@@ -1,20 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // KTRK v2: the binary track record every board's sink emits, so a consumer
 // reads the same bytes from a Cortex-M UART, a RISC-V Linux process or a
-// file (the same core and the same wire formats on every board;
-// docs/architecture.md). Each track report becomes one fixed-size record; a record is never
-// split, so a consumer can always resynchronise on the magic.
-//
-// Binary rather than text: 64 bytes per track instead of ~120 characters,
-// no number formatting code (printf is banned from the images), integer
-// fields in the same units as the wire frames, and a CRC-32 so the host
-// can tell a damaged record from a real jump.
-//
-// v2 carries any state layout: a layout code says what the state
-// components mean, so a board bound to a bistatic (PCL) tracker emits the
-// same record as a radar board. v1 was Cartesian x/y only (56 bytes, fixed
-// x, y, vx, vy); no board writes it any more, tools/ktrk_decode.py still
-// reads it. Layout, all little-endian:
+// file (docs/architecture.md). One fixed-size record per track report, never
+// split, so a consumer can always resynchronise on the magic; the CRC-32
+// tells a damaged record from a real jump. Why binary, the older v1 and the
+// rounding choices: docs/porting.md, "KTRK records". Layout, all
+// little-endian (tools/ktrk_decode.py reads it):
 //
 //   off size field
 //    0  u32  magic 'K' 'T' 'R' 'K' (0x4B52544B)
@@ -43,19 +34,13 @@
 //                           ax_mmps2 ay_mmps2
 //   3 bistatic 1-D          rb_mm drb_mmps (Rb, dRb of PCL)      Rb
 //
-// The layout is chosen at compile time from the filter's named state layout
-// (Motion::Layout), so a tracker whose layout has no code here does not
-// compile; add a code and a row to tools/ktrk_decode.py. Six components fit
-// every 2-D layout with acceleration; the 3-D sonar state (7) needs a code
-// with a longer record.
-//
-// Scalars are rounded and saturated to the field in the tracker's own
-// precision (v1 went through float, which resolves 1 mm only up to 16.7 km:
-// too coarse for bistatic ranges of up to 200 km, and a double tracker
-// gains nothing from it); NaN is written as the field's minimum (INT32_MIN, or the unsigned maximum
-// for unsigned fields). A fixed-point tracker is encoded with
-// integer arithmetic only, rounding half away from zero as the float path
-// does; a saturated value is written as the field's end of its sign.
+// The layout code comes from the filter's named state layout
+// (Motion::Layout) at compile time: a layout with no code here does not
+// compile (add a code and a row to tools/ktrk_decode.py). Scalars are
+// rounded half away from zero and saturated to the field in the tracker's
+// own precision (integer arithmetic only for a fixed-point tracker); a
+// saturated value is the field's end of its sign, and NaN is written as the
+// field's minimum (INT32_MIN, or the unsigned maximum for unsigned fields).
 #pragma once
 
 #include <cmath>
