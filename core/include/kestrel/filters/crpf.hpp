@@ -1,47 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Cost-reference particle filter (docs/filters.md; paper 001 section 3.4,
-// eq. 4-8 and table 6, after Miguez, Bugallo and Djuric 2004, "A new class
-// of particle filters for random dynamic systems with unknown statistics",
-// EURASIP JASP 2004:15, and Xu 2006). It needs scales, not noise
-// distributions: particles carry a cost instead of a likelihood weight.
-// Particle count kParticles is a template parameter; the filter owns a
-// seeded PRNG (math/prng.hpp) so the same seed gives the same bits.
-//
-// One step t with measurement y_t (predict(dt) then update(z)):
-//   1. noise-free prediction  xp_i = f(x_(t-1)^i, dt)                  (predict)
-//   2. risk  R_i = lambda C_(t-1)^i + dC(xp_i | y_t)                     (eq. 6)
-//      dC(x | y) = sum_c (residual_c(y, h(x)) / s_c)^2, s_c = sqrt(R_cc):
-//      the channels are normalised by their tuned scales (docs/filters.md: without
-//      it the bearing term vanishes next to range in metres).
-//   3. selection PMF  pi_i ∝ (R_i - min R + delta)^(-beta)                (eq. 8)
-//   4. systematic resampling by pi (Kitagawa 1996): one uniform offset,
-//      N equally spaced pointers, one pass over the cumulative sum, so the
-//      work is exactly N + N steps whatever the PMF (bounded).
-//   5. propagation  x_t^i = xp_(j_i) + G a_i, a_i ~ N(0, sj^2 I): an
-//      acceleration kick (docs/filters.md; default sj = 2 m/s^2) when the motion model
-//      offers noise_gain(dt) (CV-2D does); otherwise x_t^i = xp_(j_i) + L w_i,
-//      w_i ~ N(0, I), L L^T = Q(dt) of the filter's motion model.
-//   6. cost  C_t^i = lambda C_(t-1)^(j_i) + dC(x_t^i | y_t)              (eq. 5)
-//   7. estimate  x_hat = sum_i w_i x_t^i with w_i ∝ (C_t^i - min C_t + delta)^(-beta),
-//      i.e. weighted by the updated cost, not by the risk; P is the weighted
-//      sample covariance of the cloud.
-// Initial cloud: x_0^i ~ N(x0, P0) (semidefinite Cholesky of P0), C_0^i = 0.
-// h(x) in steps 2 and 6 goes through the measurement model's
-// particle_residual(z, x) when it has one (HasParticleResidual): PolarRadar's
-// uses the core's deterministic atan2 (math/atan2.hpp), about 2.5x cheaper
-// than glibc's and the same bits on every IEEE platform.
-//
-// Choices beyond the paper (docs/filters.md): beta is an integer (1..8), so
-// the PMF needs no pow(); several predict() calls without an update add up
-// their dt (one kick for the whole interval); innovation() is linearised at
-// the cloud's mean (H P H^T + R) because the gate needs a covariance, which
-// a cost-based filter does not define; update(z, R) takes the scales from
-// diag(R). There is no predict(dt, Q): the kick is the CRPF's process noise.
-//
-// Commit-on-success: update() writes into the second particle buffer and
-// swaps only when every new particle and cost is finite; the PRNG state is
-// restored on failure. Statuses: kNonFinite, kNotPositiveDefinite (a scale
-// <= 0 in R, or a P0 that is indefinite at reset).
+// Cost-reference particle filter (paper 001 section 3.4, eq. 4-8 and table
+// 6, after Miguez, Bugallo and Djuric 2004, "A new class of particle filters
+// for random dynamic systems with unknown statistics", and Xu 2006). It needs
+// scales, not noise distributions: particles carry a cost (eq. 5) instead of
+// a likelihood weight, and are selected by their risk (eq. 6) through the
+// PMF of eq. 8 and systematic resampling. kParticles is a template parameter
+// and the filter owns a seeded PRNG (math/prng.hpp), so the same seed gives
+// the same bits. update() writes into a second particle buffer and swaps only
+// when every particle and cost is finite, restoring the PRNG otherwise
+// (kNonFinite; kNotPositiveDefinite for a scale <= 0 in R or an indefinite P0
+// at reset). The steps and the choices beyond the paper: docs/filters.md,
+// "CRPF" and "Choices beyond the paper".
 #pragma once
 
 #include <concepts>

@@ -1,53 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // Interacting multiple model filter (Blom and Bar-Shalom 1988; Bar-Shalom,
-// Li, Kirubarajan 2001, section 11.6.6) over a fixed set of mode filters,
-// each an existing filter (Ekf on CV-2D, CA-2D, CT-2D, ...) with its own
-// state. One cycle, in the five steps of the IMM algorithm (BLK 2001,
-// 11.6.6):
-//   1. mixing probabilities mu_i|j = p_ij mu_i / c_j, c_j = sum_i p_ij mu_i;
-//   2. mixing: x0_j = sum_i mu_i|j x_i,
-//      P0_j = sum_i mu_i|j (P_i + (x_i - x0_j)(x_i - x0_j)^T);
-//   3. mode-matched filtering from (x0_j, P0_j), and the mode likelihood
-//      L_j = N(nu_j; 0, S_j) from mode j's own innovation and S;
-//   4. mode probability update mu_j = L_j c_j / sum_k L_k c_k;
-//   5. combination x = sum_j mu_j x_j,
-//      P = sum_j mu_j (P_j + (x_j - x)(x_j - x)^T).
-// (See docs/imm.md.)
-//
-// Mixing across state spaces: every mode's state is lifted into one common
-// state [x vx ax y vy ay w] (ImmCommonLayout) by its Layout's names. A
-// component a mode lacks is filled with 0 (CV: no acceleration; CV and CA:
-// no turn) and given a padding variance (ImmParams) with no correlation, so
-// every lifted covariance, and hence every mixed and combined one, is
-// positive definite; a mode takes back only its own components. The
-// tracker sees the combined estimate projected onto the Output motion
-// model's state (CA-2D for the radar), so the two-point initiator, the
-// reports and the gate are those of a single-model filter.
-//
-// Gating: innovation() is the single Gaussian that moment-matches the
-// mixture after predict() (combined x and P), linearised at x: nu, S and
-// d2 of that Gaussian. The mode likelihoods do not use it.
-//
-// Time: predict() mixes and predicts (the IMM's interaction step); update()
-// filters and updates the mode probabilities. A predict not followed by an
-// update (a missed plot) leaves mu = c, the predicted mode probabilities.
-// The switching matrix is given for a period T0 (switching_period_s) and
-// scaled to each predict's dt by mean sojourn times: mode i is held for an
-// exponential time of mean tau_i = -T0 / ln p_ii(T0), so
-// p_ii(dt) = exp(-dt / tau_i) = p_ii(T0)^(dt / T0), and a switch away goes
-// to j in the configured proportions, p_ij(dt) = (1 - p_ii(dt)) p_ij(T0) /
-// (1 - p_ii(T0)). At dt = T0 the matrix is the configured one bit for bit
-// (docs/imm.md and docs/decisions.md say why this form).
-//
-// Numerics: likelihoods are combined in logs (ln L_j = -(d2_j + ln|S_j|)/2,
-// the common 2 pi term dropped) and shifted by their maximum before exp,
-// so float neither underflows nor overflows; every probability is floored
-// at min_probability and renormalised. Commit on success: every operation
-// works on copies of the mode filters and commits only if every mode
-// accepted and the combined covariance is positive definite; otherwise it
-// returns the first refusal (kNonFinite, kNotPositiveDefinite, kOutOfRange)
-// and nothing changes. No allocation; every loop is bounded by kModes and
-// the fixed state sizes.
+// Li, Kirubarajan 2001, section 11.6.6, its five steps: mixing
+// probabilities, mixing, mode-matched filtering, mode probability update,
+// combination) over a fixed set of mode filters, each an existing filter
+// (Ekf on CV-2D, CA-2D, CT-2D, ...) with its own state. Modes are mixed in
+// one common state [x vx ax y vy ay w] by their layouts' names, with padding
+// variances for missing components; the tracker sees the combination
+// projected onto the Output model's state, and the gate the moment-matched
+// Gaussian. predict() mixes and predicts with the switching matrix scaled to
+// dt by mean sojourn times; update() filters and updates the mode
+// probabilities. Likelihoods are combined in logs; commit on success
+// (kNonFinite, kNotPositiveDefinite, kOutOfRange). Details and why:
+// docs/imm.md, "The IMM cycle" and its subsections.
 #pragma once
 
 #include <array>

@@ -1,37 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The sigma-point Kalman filter, additive noise, over a choice of point set
-// (docs/filters.md; paper 001 section 3.2): Ukf is the unscented Kalman
-// filter, scaled unscented transform (table 2, which is van der Merwe 2004
-// algorithm 8 / Wan and van der Merwe 2000); Cdkf is the central difference
-// Kalman filter, Stirling's interpolation in place of the Taylor series
-// (table 3, which is van der Merwe 2004 section 3.4.1 and algorithm 9, after
-// Norgaard, Poulsen and Ravn 2000 and Ito and Xiong 2000; one parameter, the
-// half-width h, h^2 = 3 optimal for a Gaussian prior). The point set
-// (filters/sigma_points.hpp) holds the weights and how the covariances are
-// formed; this file holds the steps both share. Generic over any motion and
-// measurement model pair the EKF takes; fixed-size storage, 2n + 1 points at
-// compile time.
-//
-// predict(dt, Q):  X = [x, x + c L, x - c L] with P = L L^T (c the spread),
-//   Y_i = f(X_i, dt), x- = sum Wm_i Y_i, P- = the point set's covariance of
-//   Y + Q (UnscentedPoints: sum Wc_i (Y_i - x-)(Y_i - x-)^T;
-//   CentralDifferencePoints: Wc1 and Wc2 sums of first- and second-order
-//   differences).
-// update(z, R):    points redrawn from (x-, P-) (the additive-noise form;
-//   van der Merwe's alternative of augmenting the propagated set is not used
-//   so that predict and update stand alone, as the gate needs), Z_i = h(X_i),
-//   z- = sum Wm_i Z_i, S and Pxz from the point set, K = Pxz S^-1,
-//   x+ = x- + K residual(z, z-), P+ = P- - K S K^T (symmetrised).
-// On a linear model this is exactly the Kalman filter (tested).
-// With an affine (block-diagonal) motion model the time update is taken in
-// its closed form x- = f(x), P- = F P F^T + Q per axis block, exactly the
-// transform of either point set for such a model (filters/sigma_points.hpp).
-// Bearings: means and deviations go through the model's residual(), see
-// filters/sigma_points.hpp.
-//
-// Commit-on-success like the EKF: a non-finite input or result returns
-// kNonFinite; a failed Cholesky of P (before drawing points), of S, or of the
-// updated P returns kNotPositiveDefinite; x and P are then unchanged.
+// (paper 001 section 3.2): Ukf, the scaled unscented transform (table 2; van
+// der Merwe 2004 algorithm 8), and Cdkf, Stirling's interpolation with the
+// half-width h (table 3; van der Merwe 2004 section 3.4.1 and algorithm 9).
+// The point set (filters/sigma_points.hpp) holds the weights and how the
+// covariances are formed; this file holds the steps both share, on
+// fixed-size storage with 2n + 1 points at compile time. Points are redrawn
+// for the update so predict and update stand alone, as the gate needs; on a
+// linear model this is exactly the Kalman filter. Commit on success like the
+// EKF: kNonFinite, or kNotPositiveDefinite for a failed Cholesky of P, S or
+// the updated P, leave x and P unchanged. Equations and choices:
+// docs/filters.md, "UKF", "CDKF" and "Choices beyond the paper".
 #pragma once
 
 #include "kestrel/filters/sigma_point_parts.hpp"

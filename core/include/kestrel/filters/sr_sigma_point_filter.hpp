@@ -1,37 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The square-root sigma-point Kalman filter, additive noise, over a choice of
-// point set (docs/filters.md; paper 001 section 3.3): SrUkf is the
-// square-root UKF (table 4, which is van der Merwe and Wan 2001 / van der
-// Merwe 2004 algorithm 10); SrCdkf is the square-root CDKF (table 5, which
-// is van der Merwe 2004 algorithm 11). It carries the lower-triangular
-// factor Sx (P = Sx Sx^T) instead of P, so no Cholesky factorisation is
-// taken per step; same points and weights as the plain form
-// (filters/sigma_point_filter.hpp), and in exact arithmetic the same
-// estimates (tested to 1e-9 relative in double). The point set
-// (filters/sigma_points.hpp) forms the factors; this file holds the steps
-// both share.
-//
-// predict(dt, Q):  X = [x, x + c Sx, x - c Sx], Y_i = f(X_i, dt),
-//   x- = sum Wm_i Y_i, Sx- = the point set's factor of Y with sqrt(Q)
-//   (UnscentedPoints: qr{[sqrt(W_i) (Y_(1..2n) - x-), sqrt(Q)]} and a rank-1
-//   update by Y_0 - x- with Wc_0; CentralDifferencePoints: qr{[sqrt(Wc1) D1,
-//   sqrt(Wc2) D2, sqrt(Q)]}).
-// update(z, R):    points redrawn from (x-, Sx-), Z_i = h(X_i), z- = mean,
-//   Sy and Pxz from the point set (the same forms over Z with sqrt(R)),
-//   K = (Pxz / Sy^T) / Sy, x+ = x- + K residual(z, z-),
-//   Sx+ = cholupdate(Sx-, K Sy, -1) (a sequence of kMeasDim rank-1 downdates).
-// qr{} is Householder triangularisation (math/triangular.hpp); cholupdate is
-// math/cholesky_update.hpp (Eigen's LLT::rankUpdate allocates). sqrt(Q) and
-// sqrt(R) are semidefinite Cholesky factors (the DWNA Q of CV-2D is singular).
-// With an affine (block-diagonal) motion model the time update is taken in
-// its closed form x- = f(x), Sx- = qr{[F Sx, sqrt(Q)]} (F per axis block,
-// the QR on the compound matrix's block profile: sqrt_time_update.hpp),
-// exactly the point form of either point set for such a model
-// (filters/sigma_points.hpp).
-//
-// Commit-on-success: kNonFinite; kNotPositiveDefinite when a downdate would
-// lose positive definiteness, Q or R is indefinite, or Sy is singular;
-// x and Sx unchanged on error.
+// point set (paper 001 section 3.3): SrUkf (table 4; van der Merwe and Wan
+// 2001, van der Merwe 2004 algorithm 10) and SrCdkf (table 5; van der Merwe
+// 2004 algorithm 11). It carries the lower-triangular factor Sx (P = Sx Sx^T)
+// instead of P, so no Cholesky of P is taken per step; the points and weights
+// are those of the plain form, and in exact arithmetic so are the estimates
+// (tested to 1e-9 relative in double). qr{} is math/triangular.hpp's
+// Householder triangularisation and cholupdate math/cholesky_update.hpp
+// (Eigen's LLT::rankUpdate allocates). Commit on success: kNonFinite, or
+// kNotPositiveDefinite when a downdate would lose definiteness, Q or R is
+// indefinite or Sy is singular; x and Sx are then unchanged. Equations:
+// docs/filters.md, "SR-UKF and SR-CDKF".
 #pragma once
 
 #include "kestrel/filters/sigma_point_parts.hpp"

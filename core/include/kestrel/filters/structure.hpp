@@ -1,36 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// Model structure the generic filters exploit when a model exposes it
-// (docs/performance.md), detected at compile time, with the dense arithmetic as the
-// fallback, the test oracle and the baseline. No filter is written twice: a
+// Model structure the generic filters exploit when a model exposes it,
+// detected at compile time: a block-diagonal motion model (F P F^T and Q per
+// axis block), a measurement Jacobian with few non-zero columns (P H^T and
+// H P H^T from those columns, the update through the Cholesky factor of S),
+// and small innovation covariances factored by an unrolled Cholesky. A
 // filter asks "does this model expose X?" (a concept below) and calls the
-// kernel here in place of the dense product; the rest of the filter is
-// shared.
-//
-//   - Block-diagonal motion (CA-2D): the state is kStateDim / kAxisDim
-//     consecutive axes, F = blkdiag(F1, ..., F1), Q = blkdiag(Q1, ..., Q1),
-//     with F1 = axis_transition(dt) and Q1 = axis_process_noise(dt). F P F^T
-//     is then taken block by block, F1 P_ij F1^T, on the upper blocks and
-//     each diagonal block's upper triangle, the rest mirrored (exactly
-//     symmetric); a model that also declares F1 unit upper triangular
-//     (kAxisTransitionUnitUpper, any kinematic chain) has F1's structural
-//     zeros and ones skipped: 44 multiply-adds for CA-2D against 432 for the
-//     dense 6x6 triple product.
-//   - A measurement Jacobian with few non-zero columns (polar radar: x and y
-//     only): kJacobianColumns names them, jacobian_columns(x) returns them.
-//     Then P H^T = P(:, cols) Hc^T and H P H^T = Hc P(cols, cols) Hc^T, and
-//     the update runs through the Cholesky factor S = L L^T
-//     (whitened_gain(), symmetric_downdate()): U = P H^T L^-T and
-//     w = L^-1 nu give x + K nu = x + U w and P - K S K^T = P - U U^T, on
-//     the upper triangle, mirrored. Why this form and not the Joseph form
-//     the dense path keeps: Ekf's header comment.
-//   - Small m x m innovation covariances (m = kMeasDim) are factored by an
-//     unrolled Cholesky (whitened_gain(), nis()) instead of Eigen's LLT.
-// Every loop over a fixed dimension is a compile-time fold (static_for), so
-// the kernels index with constants at -O2.
-//
-// Dense<M> is model M with its structure hidden: the filters take their
-// dense path. Tests compare the two paths (tests/core/filters/structured_*),
-// and kestrel-bench / kestrel-instr-count measure them side by side.
+// kernel here in place of the dense product, so no filter is written twice.
+// Dense<M> hides a model's structure: the dense path is the fallback, the
+// test oracle (tests/core/filters/structured_*) and the baseline. Kernels
+// and why: docs/filters.md, "EKF: update forms and model structure".
 #pragma once
 
 #include <array>

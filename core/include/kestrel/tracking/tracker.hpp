@@ -1,56 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// The real-time loop of docs/tracking.md: one call per frame,
-//   step(scan): validate -> predict every track to the frame time -> gate and
-//   associate (confirmed tracks first, then tentative ones; one track per
-//   measurement) -> update ->
-//   initiate from unused measurements -> confirmation and deletion ->
-//   reports.
-// Composed at compile time of
-//   Filter       the estimator of every track (TrackingFilter);
-//   Initiator    how a track starts: two-point (a seed, then a pair) or
-//                single-point (kSinglePoint), which may start the filter
-//                itself (a multilateration fix and its update, start());
-//   Associator   who takes which measurement, over the gated pairs
-//                (NearestNeighbour, GlobalNearestNeighbour,
-//                ProbabilisticDataAssociation);
-//   Manager      when a track is confirmed, deleted or restarted (MOfN,
-//                SequentialLlr, ReacquireWhenLost);
-//   MeasurementNoise  the R confirmed tracks fuse with: as modelled
-//                (NominalMeasurementNoise, the default: no state, no code)
-//                or adapted per track under the robust gate
-//                (AdaptiveMeasurementNoise, tracking/measurement_noise.hpp);
-//   capacities   kMaxTracks and kMaxMeasurements.
-// The tracker keeps what they share: validation, time, the gates, the
-// track table, the health rules below, statistics and reports.
-// A filter that fuses part of a measurement (ChannelFilter: the sonar's
-// channel-gated EKF) takes a ChannelScan, whose measurements say which
-// channels they carry; validation reads those only, and the filter's own
-// update_channels() decides what it fuses (a track that fuses nothing of
-// the plot it took is not hit).
-// Work is bounded by the capacities: kMaxTracks x kMaxMeasurements plot
-// distances per frame at most (per pair a residual and one forward
-// substitution when the filter predicts its measurement once per track,
-// PredictsMeasurement), no allocation, no recursion. The per-track
-// passes visit the active slots only (TrackTable::active_slots()).
-// A frame that fails validation (count over capacity, NaN/Inf, out of the
-// configured measurement box, time going backwards or jumping forward past
-// the limit) is refused with its status before any track changes, so
-// nothing already tracked is lost.
-//
-// Time faults: a single far-off frame (a corrupted clock) is refused and
-// blocks nothing; a sensor whose clock really moved (a reset, a long stall)
-// sends a run of frames consistent with each other, and after
-// config.resync_frames of them the tracker restarts on the new clock
-// (tracks deleted, StepStats::resynced, resyncs()). Time differences are
-// computed without overflow for any int64 frame times.
-//
-// Covariance health: a filter that refuses a predict or update because P
-// would not be positive definite loses its track, as does a track whose
-// variances are not positive and finite, or one that would be predicted
-// over more than config.max_predict_us (a dropout): extrapolating that far
-// gives a P no plot can be folded into soundly in float. A track that cannot
-// be predicted to the frame is deleted before association, so its plots
-// (and its slot) are free to start a new track in the same frame.
+// The real-time loop (docs/tracking.md, "The real-time loop"): one step(scan)
+// per frame validates the frame, predicts every track to its time, gates and
+// associates (confirmed tracks first), updates, initiates from unused
+// measurements, confirms and deletes, and reports. It is composed at compile
+// time of a Filter, an Initiator, an Associator, a Manager, a
+// MeasurementNoise policy and the capacities (docs/architecture.md, "The
+// composed tracker"), and keeps what they share: validation, time, the gates,
+// the track table, the health rules, statistics and reports. Work is bounded
+// by kMaxTracks x kMaxMeasurements, with no allocation and no recursion; a
+// frame that fails validation is refused with its status before any track
+// changes. Time faults and the covariance health rules: docs/tracking.md.
 #pragma once
 
 #include <concepts>
