@@ -1,31 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// UW-003 (docs/scenarios.md, paper 003): four surface beacons at the corners of
-// a 2 km square, a flat seabed at D = 150 m, a target starting at
-// (500, 800, 60) m with velocity (1.2, 1.0, -0.2) m/s plus white
-// acceleration of 0.05 m/s^2 per axis, T = 1 s, 50 frames. The sound speed
-// is 1500 m/s plus a random walk of 0.3 m/s per step kept within +-2 m/s.
-// Each beacon reports the direct and the seabed-reflected arrival (image
-// source), TOA noise sigma 3 ms, and with probability 5 % an arrival is an
-// outlier, late by U(5, 50) ms.
-//
-// Variants (same seeds, same random draws, so a variant differs from uw003
-// only in what it changes): uw003-direct (direct arrivals only),
-// uw003-clean (no outliers), uw003-d100 (seabed at 100 m), uw003-1ms (TOA
-// noise 1 ms).
-//
-// Choices the paper leaves open, fixed here (docs/underwater.md lists them):
-//  - Motion per step: a ~ N(0, 0.05^2) per axis, p += v T + a T^2 / 2,
-//    v += a T (the discrete white-noise-acceleration model the filter uses).
-//    A target that would leave the water (depth outside [1, D - 1] m) is
-//    reflected back in (position and vertical velocity); counted per run.
-//  - Sound speed: c += N(0, 0.3^2) per step, then clamped to 1500 +- 2 m/s.
-//    Every arrival of a frame travels at the frame's c.
-//  - Frame k is the ping emitted at t = k T; its arrivals carry travel
-//    times (the beacons and the target share a clock), quantised to the
-//    wire's nanoseconds.
-//  - Draw order per frame: 3 accelerations, 1 sound-speed step, then per
-//    beacon and path (direct, reflected): noise, outlier coin, outlier size;
-//    all are drawn whatever the variant.
+// UW-003 (paper 003; docs/scenarios.md, "UW-003"): four surface beacons at
+// the corners of a 2 km square over a flat seabed, one target with white
+// acceleration, a sound speed on a bounded random walk, and per beacon the
+// direct and the seabed-reflected arrival with TOA noise and occasional late
+// outliers. Variants (uw003-direct, -clean, -d100, -1ms) make every draw in
+// the same order, so with one seed they share truth and noise and differ
+// only in what they change. The numbers and the choices the paper leaves
+// open are in docs/scenarios.md and docs/underwater.md, "Scenario choices
+// the paper leaves open".
 #pragma once
 
 #include <array>

@@ -1,33 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// A per-channel gate in front of the EKF (docs/filters.md and docs/tracking.md; paper 003
-// section 3.3.3): the measurement model declares every channel it can know
-// (kMeasDim, a compile-time maximum); a frame says which of them it carries
-// with a ChannelMask, the gate drops more, and Ekf fuses exactly the
-// channels left (Ekf::update(z, R, keep): a dropped channel is removed, not
-// set to zero as the paper's "replace it with 0" would, which still shrinks
-// P as if something had been measured). The gate only chooses rows; the
-// predict, the update and their checks are Ekf's, in every form Ekf has.
-// With every channel removed the step is predict-only.
-//
-// Gates, applied in this order to the present channels:
-//   per-channel (paper 003): drop channel i when |nu_i| > k sqrt(S_ii),
-//     S_ii = (H P H^T + R)_ii from the prediction; k configurable, default 2;
-//   ellipsoidal (option): test the kept set on nu^T S^-1 nu against the
-//     chi-square quantile of its dimension; while it fails, drop the kept
-//     channel with the largest |nu_i| / sqrt(S_ii) and test again (at most
-//     kMeasDim rounds).
-//
-// The filter's own configured step, update_channels(z, present) (what a
-// Tracker calls with a frame of ChannelScan), runs the configured gate, then
-// two corrections a gate needs (both off by default):
-//   widen_for_dropped: a channel the per-channel gate dropped widens P along
-//     its direction (add_gate_truncation());
-//   bound: one state component is kept within [lo, hi] by projection
-//     (constrain(); the sonar keeps the depth in the water).
-//
-// Same contract as Ekf: kNonFinite / kNotPositiveDefinite leave x and P
-// unchanged. update(z) with every channel makes it a drop-in TrackingFilter;
-// with all channels present and no gate it is Ekf's dense update.
+// A per-channel gate in front of the EKF (paper 003 section 3.3.3): the
+// measurement model declares every channel it can know (kMeasDim, a
+// compile-time maximum), a frame says which it carries with a ChannelMask,
+// the gate drops channels whose |nu_i| exceeds k sqrt(S_ii) (and optionally
+// the worst ones until the ellipsoidal test passes), and Ekf fuses exactly
+// the channels left (Ekf::update(z, R, keep)). A dropped channel is removed,
+// not set to zero as the paper's "replace it with 0" would, which still
+// shrinks P as if something had been measured. update_channels() may also
+// widen P for what the gate dropped and keep one component within bounds
+// (the sonar's depth). Same contract as Ekf: kNonFinite and
+// kNotPositiveDefinite leave x and P unchanged. Details: docs/underwater.md,
+// "Filter: a variable subset of channels".
 #pragma once
 
 #include <cmath>

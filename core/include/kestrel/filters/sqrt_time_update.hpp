@@ -1,30 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// The square-root time update of an affine, block-diagonal motion model
-// (docs/performance.md): Sx- = qr{[F Sx, sqrt(Q)]}, which filters/sigma_points.hpp's
-// header note shows to be the SR-UKF and SR-CDKF time update of such a
-// model exactly (van der Merwe 2004, algorithms 10 and 11, with Y_i - x- =
-// +-c F Sx_i). The triangularisation is math/triangular.hpp's Householder
-// (Golub and Van Loan 4th ed. 5.2.2) restricted to the compound matrix's
-// non-zeros.
-//
-// Structure. F = blkdiag(F1, ..., F1) and Sx, sqrt(Q) are lower triangular,
-// so a row of axis block b of M = [F Sx, sqrt(Q)] is zero in every column
-// of a later axis block, in both halves. Order M's columns by axis block,
-//   [F Sx cols of block 0, sqrt(Q) cols of block 0, F Sx cols of block 1, ...]
-// (a column permutation leaves M M^T, hence the factor, unchanged): row j
-// is then zero past column e_j = 2d (j/d + 1), a staircase profile with e_j
-// non-decreasing in j. The reflection that clears row j past its diagonal
-// acts on columns j .. e_j - 1 only, and cannot fill a zero of a later row
-// (its columns end at e_j or later), so the zeros past each row's e_j are
-// never touched. CA-2D (d = 3, n = 6): reflections of length 6, 5, 4, 9, 8, 7
-// instead of 12 .. 7, about 215 multiply-adds against 377 for the dense
-// 6 x 12 triangularisation. The lengths are compile-time constants
-// (structure::static_for), so each dot product and update is a fixed-size,
-// vectorised Eigen segment with no loop counter left at -O2.
-//
-// The factor of Q = blkdiag(Q1, ..., Q1) is blkdiag(chol(Q1), ...): one d x d
-// semidefinite Cholesky (block_sqrt_process_noise()), bit for bit the
-// blocks of the n x n one.
+// The square-root time update of an affine, block-diagonal motion model:
+// Sx- = qr{[F Sx, sqrt(Q)]}, exactly the SR-UKF and SR-CDKF time update of
+// such a model (van der Merwe 2004, algorithms 10 and 11; docs/filters.md,
+// "Why the affine time update is exact"). The triangularisation is
+// math/triangular.hpp's Householder (Golub and Van Loan 4th ed. 5.2.2)
+// restricted to the compound matrix's non-zeros: with the columns ordered by
+// axis block, row j is zero past column 2d (j/d + 1), and no reflection fills
+// those zeros, so each reflection acts on a shorter, compile-time-sized
+// segment. The factor of Q = blkdiag(Q1, ...) is blkdiag(chol(Q1), ...), bit
+// for bit the blocks of the full one. Derivation: docs/filters.md, "The
+// staircase of the square-root time update".
 #pragma once
 
 #include "kestrel/filters/sigma_points.hpp"

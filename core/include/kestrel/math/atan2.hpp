@@ -1,35 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Deterministic atan2 for float and double: ScalarTraits' atan2, so every
-// bearing core computes (a radar's h(x), the CRPF's per-particle cost and
-// risk, paper 001 eqs. 5-6). Two reasons to own it, as exp_log.hpp owns
-// log/exp: libm's atan2 differs between C libraries (glibc, newlib), so a
-// run replayed on a board gave other bits than on the host; and glibc's
-// correctly rounded atan2 costs about 150 instructions plus a call, which
-// was 30-40 % of a CRPF step.
-//
-// Method: fdlibm's atan (Sun, 1993; s_atan.c) folded into atan2. With
-// a = |y|, b = |x|, the ratio t = min(a, b) / max(a, b) lies in [0, 1];
-// one of three reductions maps it into |u| <= 7/16 with a single division
-// formed from a and b directly (no rounded y/x first): u = t, or
-// u = (2t - 1)/(t + 2) about atan(1/2), or u = (t - 1)/(t + 1) about pi/4.
-// atan(u) = u - u*s(u^2) with fdlibm's 11-term odd polynomial, made for
-// |u| <= 7/16. The octant and the sign of x give
-// atan2 = C + sign * atan(u) with C one of nine constants (0, atan(1/2), pi/4,
-// pi/2, atan 2, pi - atan 2, 3pi/4, pi - atan(1/2), pi), each stored as a
-// hi + lo pair so the one final rounding dominates: tested within 1 ulp of
-// std::atan2 (glibc, correctly rounded) on a dense grid
-// (tests/core/math/atan2_test.cpp). The sign of y is copied last.
-//
-// Special values follow C99 Annex F (as std::atan2): a NaN gives NaN;
-// atan2(+-0, +0) = +-0, atan2(+-0, -0) = +-pi, atan2(y != 0, +-0) = +-pi/2;
-// infinities give +-pi/4, +-3pi/4, +-pi/2, +-0 or +-pi.
-//
-// Only + - * / and sign-bit operations, so IEEE 754 makes every step
-// correctly rounded and the result is the same on every IEEE platform as
-// long as a*b+c is not contracted into an FMA: kestrel::core compiles with
-// -ffp-contract=off, which GCC needs even under -std=c++20 on a target
-// with an FMA (Cortex-M4F/M7).
-// No loop, no table lookup beyond the 12 constants, no libm call.
+// Deterministic atan2 for float and double, ScalarTraits' atan2: every
+// bearing core computes (a radar's h(x), the CRPF's cost and risk, paper 001
+// eqs. 5-6) gives the same bits on every IEEE platform, which libm's atan2
+// does not across C libraries. fdlibm's atan (Sun 1993, s_atan.c) folded into
+// atan2: the ratio min/max of |y|, |x| reduced about 0, atan(1/2) or pi/4
+// with one division, fdlibm's 11-term odd polynomial on |u| <= 7/16, and an
+// octant constant stored as hi + lo; within 1 ulp of a correctly rounded
+// atan2 (tests/core/math/atan2_test.cpp). Special values follow C99 Annex F
+// as std::atan2 does. Only + - * / and sign-bit operations, so the bits hold
+// as long as a*b+c is not contracted into an FMA (kestrel::core compiles with
+// -ffp-contract=off). Why and what it cost: docs/filters.md, "CRPF h(x)
+// through the core's own atan2".
 #pragma once
 
 #include <cmath>

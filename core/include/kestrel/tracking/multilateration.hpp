@@ -1,33 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // Robust least-squares multilateration of one TOA frame with a known sound
-// speed: how the underwater tracker starts (docs/scenarios.md, UW-003: "a
-// robust least-squares multilateration of the first frame with c = 1500 m/s:
-// Gauss-Newton on all arrivals from several starting depths, depth clipped
-// to (0, D), residuals over 3 sigma rejected"). The direct and the
-// seabed-reflected arrivals both enter, through the same MultipathToa model
-// the filter uses, so depth is fixed by the reflected paths (docs/underwater.md).
-//
-// For each starting point (beacon centroid plus optional horizontal offsets,
-// times each starting depth):
-//   1. Gauss-Newton on the normalised residuals r_i = (t_i - h_i(p)) / sigma
-//      over the current inliers, at most max_iterations steps, each step
-//      halved (at most kMaxHalvings times) until the cost drops, depth
-//      clipped to [m, D - m] (m = depth_margin_m) after every step; converged
-//      when a step moves less than converge_step_m or lowers the cost by
-//      less than converge_cost_fraction of it;
-//   2. if the largest |r_i| exceeds reject_sigma, that arrival is rejected
-//      and 1 runs again from the current point (at most max_rejections
-//      times, and never below min_arrivals inliers).
-// Raw residuals, as UW-003's start asks (docs/scenarios.md): standardised ones (r_i / sqrt(1 - h_i))
-// were tried and refused good direct-only frames, whose leverages are
-// meaningless where depth is nearly unobservable. A single outlier of about
-// 4 sigma can pull a fix by a few depth sigmas without any residual passing
-// 3 sigma; the tracker's gate deals with what follows.
-// The answer is the start with the most inliers, then the lowest cost. If
-// another start with as many inliers reaches a point more than
-// ambiguity_distance_m away at a cost within ambiguity_cost_margin, the
-// geometry does not decide between them and the status is kAmbiguous.
-// Every loop is bounded by the configuration's compile-time maxima.
+// speed: how the underwater tracker starts (paper 003; UW-003 in
+// docs/scenarios.md). Gauss-Newton on the normalised residuals of the direct
+// and the seabed-reflected arrivals, through the same MultipathToa model the
+// filter uses (so the reflected paths fix depth), from several starting
+// depths, with halved steps, depth clipped to the water, and the largest
+// residual over reject_sigma rejected while enough arrivals remain. The
+// answer is the start with the most inliers, then the lowest cost;
+// kAmbiguous when another start as good lies far away. Every loop is bounded
+// by compile-time maxima. Why raw residuals, and the known limits:
+// docs/underwater.md, "Initialisation: robust multilateration".
 #pragma once
 
 #include <cstdint>
