@@ -1,27 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // R2-AEKF: the range/bearing-rescaled, anisotropic-Q adaptive EKF of paper
-// 000 (Park et al., section 2-2, eqs. 7-18) on top of the EKF-CA machinery
-// (kestrel::Ekf with explicit Q and R; no copy of the EKF). Per step it
-// rescales the measurement noise per channel from the innovation statistics
-// (eqs. 8-12, plus robust gating) and shapes the process noise along and
-// across the estimated velocity from manoeuvre indicators (eqs. 13-18).
-//
-// Two modes share one implementation (docs/r2aekf.md, R2-AEKF):
-//   - kPaper follows the printed equations: plain EWMA NIS R law (eq. 9-10),
-//     robust gating with rho > 1, turn indicator tau = |nu_b|/T (eq. 13-14)
-//     and axial indicator sqrt(mean NIS_r) (eq. 15); a switch selects the
-//     printed eq. 16 (phi_ax in both scales) instead of the text's form.
-//   - kDefault carries the corrections a simulation check found necessary:
-//     the R law uses the spread (EWMA of e^2 minus the square of the EWMA of
-//     e), so a steady bias such as manoeuvre lag does not inflate R; robust
-//     gating is off (rho = 1); the manoeuvre indicators come from the
-//     innovation mapped to Cartesian and rotated into the velocity frame,
-//     normalised by its predicted spread, so they hold at any aspect angle.
-// Order of one step (docs/r2aekf.md, steps 1-7): predict with Q_(k-1); innovation
-// with R_(k-1); per-channel NIS; R law -> R_k; S with R_k, robust gating;
-// EKF update (Ekf::update); indicators; Q scales -> Q_k for the next
-// prediction. Everything lives in fixed-size storage; no allocation, no
-// exceptions; float and double (any scalar with ScalarTraits).
+// 000 (Park et al., section 2-2, eqs. 7-18), on top of kestrel::Ekf with
+// explicit Q and R (no copy of the EKF). Per step it rescales the
+// measurement noise per channel from the innovation statistics (eqs. 8-12,
+// with robust gating) and shapes the process noise along and across the
+// estimated velocity from manoeuvre indicators (eqs. 13-18). Two modes share
+// one implementation: kPaper follows the printed equations, kDefault carries
+// the corrections a simulation check found necessary. Fixed-size storage, no
+// allocation, no exceptions; any scalar with ScalarTraits. The step order,
+// the modes and why: docs/r2aekf.md, "Equations, step by step" and "What the
+// default mode corrects, and why".
 #pragma once
 
 #include <concepts>

@@ -1,28 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // Seeded pseudo-random numbers for core (the CRPF's initial cloud, particle
-// kicks and resampling offsets). Requirements: no heap, no global state, a
-// constant bound on every loop, and the same bits on every platform for the
-// same seed, so a CRPF run can be replayed on a board and on the host.
-//
-// - Xoshiro256StarStar: Blackman and Vigna's xoshiro256** 1.0 (2018), seeded
-//   by expanding one 64-bit seed with SplitMix64 (their recommendation).
-//   Integer arithmetic only, hence bit-identical everywhere.
-// - uniform01<F>(): the top 53 (double) or 24 (float) bits scaled by an
-//   exact power of two: a value in [0, 1), exact on every IEEE platform.
-// - NormalGenerator<F>: the 128-layer ziggurat of Marsaglia and Tsang (2000)
-//   in Doornik's form (2005, ZIGNOR: the layer index and the uniform come
-//   from disjoint bits of one draw). About 98.8 % of the draws cost one
-//   64-bit draw, one compare and one multiply. The layer table is generated
-//   once into ziggurat_tables.hpp as exact hexadecimal constants. The rare
-//   wedge test needs exp() and the tail needs log(); std::exp/std::log are
-//   not correctly rounded and differ between C libraries (glibc, newlib), so
-//   both are Kestrel's own (math/exp_log.hpp: exact exponent handling plus
-//   fixed polynomials in + - * / only), so the stream is bit-identical as
-//   long as the compiler does not contract a*b+c into an FMA (kestrel::core
-//   compiles with -ffp-contract=off; GCC contracts in C++ otherwise, even
-//   under -std=c++20, on a target with an FMA).
-//   Every rejection loop is bounded (kMaxTries); exhausting one has a
-//   probability below 1e-100 and returns a fixed value.
+// kicks and resampling offsets): no heap, no global state, a constant bound
+// on every loop, and the same bits on every IEEE platform for the same seed,
+// so a CRPF run replays identically on a board and on the host.
+// Xoshiro256StarStar is Blackman and Vigna's xoshiro256** 1.0 (2018), seeded
+// through SplitMix64; uniform01<F>() scales the top 53 or 24 bits by an exact
+// power of two; NormalGenerator<F> is the 128-layer ziggurat of Marsaglia and
+// Tsang (2000) in Doornik's ZIGNOR form (2005), its table generated into
+// ziggurat_tables.hpp and its rare exp/log from math/exp_log.hpp, not libm.
+// Every rejection loop is bounded (kMaxTries). Details: docs/filters.md,
+// "Choices beyond the paper", "Core PRNG".
 #pragma once
 
 #include <bit>

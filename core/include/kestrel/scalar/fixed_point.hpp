@@ -1,29 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// The project's fixed-point scalar (docs/models.md): a signed Q-format number
-// on int64 storage, templated on the fraction bits (Q31.32 by default, Q23.40
-// as the fine-grained option), for FPU-less cores. Every operation is integer
-// only and gives one correctly rounded result (round to nearest, ties to
-// even): + and - are exact; * forms the exact 64x64 -> 128-bit product from
-// four 32x32 -> 64-bit pieces (no __int128, which 32-bit targets lack) and
-// rounds once; / divides the exact 128-bit dividend by shift-subtract with a
-// fixed 64-step loop and rounds once. The same source therefore produces the
-// same bits on x86-64, i386 and a Cortex-M0+, which is what makes a host
-// replay a proof of what the board computed (docs/fixed-point.md).
-//
-// Out-of-range results saturate to +-(2^63 - 1) raw, which the type treats as
-// non-finite (the role Inf/NaN play for float): ScalarTraits::is_finite() is
-// false for them, a filter refuses a step that produced one, and they stick
-// through further arithmetic. Each fresh saturation (overflow, division by
-// zero, sqrt of a negative) increments a counter tests read with
-// fixed_point_overflow_count(). In a constant expression an overflow is a
-// compile error instead.
-//
-// Construction: implicit from integers (exact, saturating), explicit and
-// consteval from double (so a double literal becomes a constant at compile
-// time and never costs soft-float at run time), from_double() for host code
-// and from_ratio(num, den) for integer sensor units at the HAL boundary.
-// Math functions (sqrt, hypot, atan2, sin, cos) and ScalarTraits live in
-// fixed_point_math.hpp; the Eigen glue in fixed_point_eigen.hpp.
+// The project's fixed-point scalar for FPU-less cores: a signed Q-format
+// number on int64 storage, templated on the fraction bits (Q31.32 by
+// default, Q23.40 as the fine-grained option). Every operation is integer
+// only and correctly rounded (to nearest, ties to even), with no __int128,
+// so the same source gives the same bits on x86-64, i386 and a Cortex-M0+:
+// a host replay proves what the board computed. An out-of-range result
+// saturates to +-(2^63 - 1) raw, which the type treats as non-finite, as
+// float treats Inf/NaN (a filter refuses the step; a counter records it);
+// in a constant expression it is a compile error. A double converts only at
+// compile time (consteval). Math functions and ScalarTraits are in
+// fixed_point_math.hpp, the Eigen glue in fixed_point_eigen.hpp. Operations,
+// saturation and construction: docs/fixed-point.md, "Formats".
 #pragma once
 
 #include <bit>

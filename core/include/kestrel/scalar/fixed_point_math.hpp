@@ -1,22 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// Integer-only math for FixedPoint (docs/models.md) and its ScalarTraits
-// specialisation, so every model and filter runs on it unchanged.
-//   - sqrt(a): integer square root of the exact 128-bit a * 2^F, rounded to
-//     nearest: correctly rounded (error <= 0.5 LSB).
-//   - hypot(a, b): integer square root of the exact 128-bit sum of squares of
-//     the raw values; r^2 is never formed in Q format, so hypot works up to
-//     the format's range, not its square root. Correctly rounded.
-//   - atan2(y, x): CORDIC in vectoring mode on operands normalised to 61
-//     bits, 61 iterations with the integer arctangent table of
-//     fixed_point_tables.hpp (angles in units of 2^-60 rad), rounded once to
-//     F bits. Result in [-pi_F, pi_F], pi_F = round(pi * 2^F) / 2^F.
-//   - sin, cos: reduction modulo 2 pi at 2^-60 rad, quadrant folding, CORDIC
-//     in rotation mode with 2^-62 vectors, rounded once to F bits.
-//   - wrap_angle: (-pi_F, pi_F]; an angle already there is returned as is.
-// The internal error of the CORDIC paths is below 2^-50 rad, far under the
-// final rounding (2^-33 rad in Q31.32), so results are within 0.5 LSB plus
-// that margin of the exact value (tests/core/scalar/fixed_point_math_test.cpp
-// measures it against long double over random sets). Loop counts are fixed.
+// Integer-only math for FixedPoint and its ScalarTraits specialisation, so
+// every model and filter runs on it unchanged: sqrt and hypot are integer
+// square roots of exact 128-bit radicands (hypot never forms r^2 in Q
+// format), correctly rounded; atan2, sin and cos are 61-step CORDIC at
+// 2^-60 rad with the tables of fixed_point_tables.hpp, rounded once to the
+// format, so their internal error stays far under the final rounding
+// (tests/core/scalar/fixed_point_math_test.cpp checks it against long
+// double); wrap_angle returns (-pi_F, pi_F]. Loop counts are fixed. Details
+// and figures: docs/fixed-point.md, "Formats".
 #pragma once
 
 #include <bit>

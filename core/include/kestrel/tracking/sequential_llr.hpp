@@ -2,28 +2,14 @@
 // Score-based track management: the sequential log-likelihood ratio of
 // "target" against "clutter" (Blackman and Popoli, Design and Analysis of
 // Modern Tracking Systems, 1999, section 6.2), tested sequentially (Wald).
-//   start:  L = ln(beta_NT / beta_FA)
-//   hit:    L += ln(P_D / beta_FA) - (m/2) ln(2 pi) - (1/2) ln|S| - d2 / 2
-//   miss:   L += ln(1 - P_D P_G)
-// beta_FA is the clutter density and beta_NT the density of new targets,
-// both per unit of measurement volume (the product of the measurement's
-// channel units, e.g. m rad for the polar radar); P_G is the gate
-// probability of the track's class (TrackerConfig). With the chosen
-// probabilities of confirming a false track (alpha) and of dropping a true
-// one (beta):
-//   confirm a tentative track when L >= T_c = ln((1 - beta) / alpha),
-//   delete a tentative track when L has fallen T_d = ln(beta / (1 - alpha))
-//   below the highest it reached,
-//   delete a confirmed track when it has fallen T_c - T_d below that peak
-//   (a run of misses, or plots that fit badly).
-// The tentative test is on the evidence the plots brought, not on the prior
-// odds ln(beta_NT / beta_FA) it starts from: with a realistic (small) new-target
-// density that start lies below T_d, and an absolute test would delete
-// every track at its first frame. Confirmation does include the prior, so
-// rare new targets need more evidence.
+// A track starts at the prior odds ln(beta_NT / beta_FA), gains
+// ln(P_D / beta_FA) - (m/2) ln(2 pi) - ln|S| / 2 - d2 / 2 per hit and
+// ln(1 - P_D P_G) per miss; the thresholds follow from the chosen
+// probabilities of confirming a false track and of dropping a true one.
 // Unlike M-of-N it weighs how well each plot fits and how dense the clutter
 // is, so one threshold pair holds from a clean scene to a dense one.
-// Floating-point scalars only (a log per hit).
+// Floating-point scalars only (a log per hit). The tests and why the
+// tentative one ignores the prior: docs/tracking.md, "The track score".
 #pragma once
 
 #include <cstdint>
