@@ -1,23 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// MC-001 (docs/scenarios.md; paper 001 section 4): the 3 x 3 grid of bearing
-// and range noise, 100 steps of a CV-2D target seen by a polar radar at the
-// origin, every filter of paper 001 (EKF, UKF, CDKF, SR-UKF, SR-CDKF, CRPF
-// N = 100/300/500) tuned with the middle values, plus an EKF tuned to each
-// cell's true noise (the oracle). Position MSE per cell and filter with its
-// 95 % interval, the divergence count and the time per step.
-//
-// The filters are driven directly, not through the HAL and the Tracker:
-// MC-001 starts each filter at truth + N(0, P0) and scores every step,
-// which the tracker's two-point initiation cannot reproduce.
-//
-// Determinism. Run r of every cell draws its data from the core's
-// NormalGenerator seeded with r (docs/scenarios.md: seeds 0..2999; the cells share the
-// draws, scaled by their sigmas); CRPF f of run r in cell c is seeded with a
-// SplitMix64 hash of (c, r, f). A run depends on nothing else, so its record
-// is the same whatever thread computes it or which shard it falls in; the
-// summary reduces the records in (cell, run, filter) order, so a single run,
-// any --jobs, and merged shards give the same table bit for bit. Only the
-// timing differs (it is measured, not computed).
+// MC-001 (paper 001 section 4; docs/scenarios.md, "MC-001"): the 3 x 3 grid
+// of bearing and range noise, 100 steps of a CV-2D target seen by a polar
+// radar, every filter of paper 001 tuned with the middle values plus an EKF
+// tuned to each cell's true noise (the oracle); position MSE per cell and
+// filter with its 95 % interval, the divergence count and the time per step.
+// The filters are driven directly, not through the HAL and the Tracker,
+// because MC-001 starts each filter at truth + N(0, P0). A run depends only
+// on its seeds (data seeded with r, each CRPF with a SplitMix64 hash of cell,
+// run and filter) and the summary reduces records in (cell, run, filter)
+// order, so any --jobs and merged shards give the same table bit for bit;
+// only the measured timing differs (docs/filters.md, "MC-001 campaign").
 #pragma once
 
 #include <array>

@@ -1,27 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// PCL-002 metrics (docs/scenarios.md and docs/metrics.md), per run and over Monte Carlo runs.
-//
-// Tolerance: a track estimate is "on the target" in a frame when
-// |Rb_hat - Rb| <= 50 m and |dRb_hat - dRb| <= 5 m/s (docs/scenarios.md).
-// Target track: a confirmed track that is on the target in more than half of
-// the frames it was reported confirmed; every other confirmed track is a
-// false confirmed track ("never within that tolerance for most of its life").
-// Judging a track over its whole life (not frame by frame) keeps a target
-// track that was dragged onto clutter in the accuracy denominator.
-//
-//  - association accuracy = frames in which some target track took the
-//    target's detection / frames with a target detection in the wire frame
-//    while a target track is reported confirmed (a detection the adapter cut
-//    from the scan counts against it);
-//  - coverage after confirmation = frames after the first frame in which a
-//    target track is confirmed (that frame excluded) in which any confirmed
-//    track is on the target / those frames;
-//  - Rb and dRb RMSE over the frames in which a target track is reported,
-//    using the oldest one (lowest id) when there are several;
-//  - time to first confirmation = time of that first frame (the drone is
-//    present from t = 0; with 5-of-6 and 0.5 s frames the minimum is 2 s).
-// Per-run figures are averaged over runs with a 95 % interval (docs/metrics.md);
-// accuracy and coverage are also given pooled (total hits / total frames).
+// PCL-002 metrics, per run and over Monte Carlo runs (docs/metrics.md and
+// docs/pcl.md, "Metrics"): a track is on the target in a frame when
+// |Rb_hat - Rb| <= 50 m and |dRb_hat - dRb| <= 5 m/s, and a confirmed track
+// is a target track when it is on the target in more than half of the
+// frames it was reported confirmed (judged over its whole life, so a target
+// track dragged onto clutter stays in the accuracy denominator); every other
+// confirmed track is a false confirmed track. From these: association
+// accuracy, coverage after confirmation, Rb and dRb RMSE and time to first
+// confirmation, averaged over runs with a 95 % interval, accuracy and
+// coverage also pooled. The exact definitions are in docs/pcl.md.
 #pragma once
 
 #include <cstddef>

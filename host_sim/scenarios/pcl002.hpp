@@ -1,26 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// PCL-002 (docs/scenarios.md, paper 002): a DTV passive radar (701 MHz) with the
-// receiver at the origin and the transmitter 8.5 km south, a drone
-// manoeuvring 300-900 m north of the receiver, and every 0.5 s a frame of
-// range-Doppler candidates: the drone's detection (Pd, sigma_Rb, sigma_fD),
-// Poisson clutter uniform over Rb and fD, and 0-3 zero-Doppler ridge
-// candidates. The hard variant triples the clutter, lowers Pd to 0.7 and
-// gives the tracker 64 candidates per scan.
-//
-// Choices the paper leaves open, fixed here (docs/pcl.md lists them):
-//  - Truth is random per run ("a smooth random manoeuvre per run"): a start
-//    drawn in the allowed annulus, speed and heading driven by smooth random
-//    signals (three sinusoids each) within the acceleration limits, with a
-//    look-ahead steering term that keeps the drone in the annulus; a
-//    trajectory that still leaves the scenario's box (300-900 m, y > 0) is redrawn
-//    from the next sub-seed. Altitude is a slow sinusoid inside 50-120 m.
-//  - SNR carries no information: every candidate, target or clutter, gets
-//    SNR uniform in [12, 20] dB, and the candidates of a frame are shuffled,
-//    so neither the SNR rule nor the frame order can single out the target.
-//  - A frame never holds more than the wire's 64 candidates: when the hard
-//    variant generates more, the sensor's extractor sends its 64 strongest
-//    (with uninformative SNR, a random subset). The tracker-side rule for
-//    frames over the scan capacity is the adapter's (hal/pcl_adapter.hpp).
+// PCL-002 (paper 002; docs/scenarios.md, "PCL-002"): a DTV passive radar
+// (701 MHz) with the receiver at the origin and the transmitter 8.5 km
+// south, a drone manoeuvring 300-900 m north of the receiver, and every
+// 0.5 s a frame of range-Doppler candidates: the drone's detection, Poisson
+// clutter uniform over Rb and fD, and 0-3 zero-Doppler ridge candidates. The
+// hard variant triples the clutter, lowers Pd to 0.7 and gives the tracker 64
+// candidates per scan. The choices the paper leaves open (a random smooth
+// manoeuvre per run, uninformative SNR and shuffled candidates, the wire's 64
+// strongest) are in docs/pcl.md, "Scenario PCL-002 and the choices made".
 #pragma once
 
 #include <cstddef>

@@ -1,24 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
-// The Cortex-M7 board's choice of a concrete type for every HAL concept
-// (docs/porting.md: board.hpp binds each concept), and the sensor
-// chain (adapter + tracker) this board runs. Everything is resolved at
-// compile time; the runner calls these types directly, with no virtual
-// dispatch.
-//
+// The Cortex-M7 board's choice of a concrete type for every HAL concept and
+// of the sensor chain (adapter + tracker) it runs, all resolved at compile
+// time with no virtual dispatch (docs/porting.md, "board.hpp: binding the
+// HAL concepts" and "Cortex-M7"):
 //   MeasurementFeed -> UartRingFeed  (USART3 RX ring -> FrameAssembler)
-//   CycleClock      -> DwtCycleClock (DWT CYCCNT at the core clock, extended to 64 bits)
-//   TrackSink       -> UartTxSink    (KTRK v2 records -> USART3 TX ring), or,
-//                      with KESTREL_BOARD_SINK_CAT062 (kestrel-m7-cat062.elf),
-//                      UartCat062Sink (one ASTERIX CAT062 block per report)
-//   Adapter/Tracker, by sensor kind, in double (FPv5-D16 does
-//   double in hardware):
-//     radar (kestrel-m7.elf, the default)
-//                   -> RadarAdapter + EKF-CA radar tracker, kMaxTracks x kMaxPlots
-//     PCL   (kestrel-m7-pcl.elf, compiled with KESTREL_BOARD_SENSOR_PCL)
-//                   -> PclAdapter + PCL KF on [Rb, dRb], kPclMaxTracks x
-//                      kPclMaxCandidates, PCL-002 parameters
-// Both images are built from this folder (CMakeLists.txt); main.cpp only
-// calls make_tracker() and make_adapter(), so it is the same for both.
+//   CycleClock      -> DwtCycleClock (DWT CYCCNT, extended to 64 bits)
+//   TrackSink       -> UartTxSink (KTRK v2 records), or UartCat062Sink (one
+//                      ASTERIX CAT062 block per report) with
+//                      KESTREL_BOARD_SINK_CAT062 (kestrel-m7-cat062.elf)
+//   Adapter/Tracker -> in double (FPv5-D16): RadarAdapter + EKF-CA radar
+//                      tracker (kestrel-m7.elf), or with
+//                      KESTREL_BOARD_SENSOR_PCL PclAdapter + the PCL KF on
+//                      [Rb, dRb] with PCL-002 parameters (kestrel-m7-pcl.elf).
+// main.cpp only calls make_tracker() and make_adapter(), so it is the same
+// for every image built from this folder.
 #pragma once
 
 #include "board_config.hpp"

@@ -1,27 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// CycleClocks of the riscv64-linux board (docs/tracking.md: rdcycle/mcycle on
-// RISC-V). Which one the board uses is chosen when configuring:
-//   -DKESTREL_RV64_CYCLE_CLOCK=monotonic (default) | rdtime | rdcycle
-//
-//   MonotonicClock  clock_gettime(CLOCK_MONOTONIC), nanoseconds. Works on
-//                   every kernel. Issued as a system call (linux_syscall.hpp
-//                   says why not through glibc's vDSO path), which adds a
-//                   few hundred ns per read on current SoCs: two reads per
-//                   step, so part of one is in each measured step.
-//   RdtimeClock     the `rdtime` instruction: the platform timer (CSR time),
-//                   readable from user mode on Linux, at the device tree's
-//                   timebase-frequency (4 MHz on the JH7110, 24 MHz on the
-//                   D1, 10 MHz on QEMU virt). The cheapest read, but coarse:
-//                   one tick is tens to hundreds of core cycles.
-//   RdcycleClock    the `rdcycle` instruction: core cycles. Linux 6.6 and
-//                   later stop user-mode access to the cycle CSR by default
-//                   (the instruction traps and the process gets SIGILL)
-//                   unless the administrator sets
-//                   `sysctl kernel.perf_user_access=2`; older kernels allow
-//                   it. Its rate is the core clock, which the shell reads
-//                   from cpufreq or takes from --clock-hz.
-// All three give 64-bit counts that never wrap in practice, so a step's
-// duration is the difference of two reads.
+// CycleClocks of the riscv64-linux board, chosen when configuring with
+// -DKESTREL_RV64_CYCLE_CLOCK=monotonic (default) | rdtime | rdcycle:
+// MonotonicClock reads clock_gettime(CLOCK_MONOTONIC) in ns on every kernel,
+// as a system call (linux_syscall.hpp says why not glibc's vDSO path);
+// RdtimeClock reads the platform timer CSR at the device tree's
+// timebase-frequency, cheap but coarse; RdcycleClock reads core cycles, which
+// Linux 6.6 and later trap in user mode (SIGILL) unless
+// kernel.perf_user_access=2. All three give 64-bit counts that never wrap in
+// practice, so a step's duration is the difference of two reads. Trade-offs:
+// docs/porting.md, "riscv64-linux".
 #pragma once
 
 #include <cstdint>

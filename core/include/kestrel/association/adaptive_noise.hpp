@@ -1,25 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Innovation-based adaptation of a track's measurement noise: the filter
-// fuses the track's plots with lambda R instead of R, and lambda follows
-// the track's normalised innovation squared (NIS), in the
+// Innovation-based adaptation of a track's measurement noise, in the
 // covariance-matching class of adaptive Kalman filters (R. K. Mehra,
 // "Approaches to adaptive filtering", IEEE Trans. Automatic Control 17(5),
-// 1972): with S = H P H^T + lambda R, a consistent track has E[d2] = m
-// (m channels), so lambda is moved by the NIS excess of each plot it takes,
+// 1972): the filter fuses the track's plots with lambda R, and lambda follows
+// the NIS excess of each plot, since a consistent track has E[d2] = m,
 //   lambda' = clamp(lambda (1 + alpha (min(d2, cap) / m - 1)), 1, lambda_max).
-// A sensor noisier than its model (a burst) drives lambda up within a few
-// plots and the track weighs its prediction accordingly, its covariance
-// growing with it instead of being pulled plot by plot; when the noise is
-// back to nominal the NIS falls to m / lambda and lambda decays to 1 at the
-// rate (1 - alpha) per plot. The cap (the chi-square gate) keeps a single
-// far plot from moving lambda by more than alpha (cap / m - 1) of itself,
-// and lambda never leaves [1, lambda_max]; every lambda R is positive
-// definite, so the filter's own update keeps P positive definite. No state
-// but lambda, no allocation, two multiplications a plot. A tracker built
-// with AdaptiveMeasurementNoise (tracking/measurement_noise.hpp, a
-// compile-time choice; boards leave it out) applies it to confirmed tracks
-// under the robust gate, and only on a plot that follows a hit of the
-// previous frame.
+// The cap (the chi-square gate) bounds one plot's push, and every lambda R is
+// positive definite, so the filter's own update keeps P positive definite.
+// No state but lambda, no allocation. Applied by AdaptiveMeasurementNoise
+// (tracking/measurement_noise.hpp) to confirmed tracks under the robust gate,
+// on a plot that follows a hit of the previous frame; why and how it
+// behaves: docs/robustness.md, "Adaptive measurement noise".
 #pragma once
 
 #include "kestrel/scalar/scalar_traits.hpp"

@@ -1,25 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // The measurement noise a tracker's confirmed tracks fuse their plots with,
 // chosen at compile time (Tracker's MeasurementNoise parameter):
-//   NominalMeasurementNoise   R as the measurement model gives it. No state
-//                             and no code: the default, and what every
-//                             board builds (a tracker with it compiles to
-//                             the tracker without any noise policy).
-//   AdaptiveMeasurementNoise  under the robust gate, each confirmed track
-//                             fuses with lambda R, lambda in [1, max]
-//                             following the track's NIS
-//                             (association/adaptive_noise.hpp); per track
-//                             one scalar, per frame one counter. Needs a
-//                             filter that takes a scaled R
-//                             (ScalesMeasurementNoise: Ekf, Imm).
-// Its parameters (MeasurementNoiseParams: robust_noise_gain and
-// robust_noise_max_scale of RadarTrackerParams) are given through
-// Tracker::configure_measurement_noise(), which a tracker built with the
-// nominal policy refuses with kOutOfRange for any gain but 0, as the
-// adaptive one does without the robust gate: a value the tracker cannot
-// honour is never dropped silently. A board opts in by
-// naming the policy in its tracker type (docs/robustness.md, "Adaptive
-// measurement noise"); nothing is decided at run time.
+// NominalMeasurementNoise uses R as the model gives it, with no state and no
+// code (the default, and what every board builds); AdaptiveMeasurementNoise
+// fuses each confirmed track under the robust gate with lambda R following
+// its NIS (association/adaptive_noise.hpp), and needs a filter that takes a
+// scaled R (ScalesMeasurementNoise: Ekf, Imm). Tracker::
+// configure_measurement_noise() refuses with kOutOfRange any gain the
+// tracker cannot honour (any but 0 under the nominal policy, or without the
+// robust gate), so a value is never dropped silently. Nothing is decided at
+// run time (docs/robustness.md, "Adaptive measurement noise").
 #pragma once
 
 #include <cstddef>

@@ -1,26 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// The underwater tracker of paper 003 (docs/models.md, docs/tracking.md and docs/scenarios.md, UW-003):
-// one target, a few beacons, each frame a set of TOA arrivals labelled by
-// beacon and path (direct or seabed-reflected). It is the one Tracker
-// (tracking/tracker.hpp) composed for a labelled sensor:
-//   Filter     ChannelGatedEkf (filters/channel_gated_ekf.hpp): per-channel
-//              gate k*sqrt(S_ii) (and the optional ellipsoidal gate) in front
-//              of Ekf's update; P widened for what the gate dropped; the
-//              depth kept in the water;
-//   Initiator  MultilaterationInitiator: a robust fix of the frame, then an
-//              EKF update with its inliers from a wide prior;
-//   Associator LabelledAssociation: the frame is the target's, no gate;
-//   Manager    ReacquireWhenLost: confirmed at its fix, never deleted for
-//              missing data, restarted from a fresh fix when it keeps
-//              fusing at most half of full frames;
-//   capacities one track, one measurement (the frame as one ChannelScan
-//              entry: channel = 2 beacon + path).
-// What is left here is the sonar's front end: the labels become channels
-// (checks that need the beacon table), and the step's summary.
-//
-// State [x y z vx vy vz c] (models/motion/constant_velocity_3d_sound_speed.hpp),
-// measurement models/measurement/multipath_toa.hpp. No allocation, bounded
-// loops.
+// The underwater tracker of paper 003 (UW-003): one target, a few beacons,
+// each frame a set of TOA arrivals labelled by beacon and path (direct or
+// seabed-reflected). It is the one Tracker (tracking/tracker.hpp) composed
+// for a labelled sensor: ChannelGatedEkf, MultilaterationInitiator,
+// LabelledAssociation and ReacquireWhenLost, with one track and one
+// measurement (the frame as one ChannelScan entry, channel = 2 beacon +
+// path). What is left here is the sonar's front end: labels become channels
+// (the checks that need the beacon table), and the step's summary. State
+// [x y z vx vy vz c], measurement models/measurement/multipath_toa.hpp; no
+// allocation, bounded loops. Parts and step: docs/underwater.md, "Front end:
+// UnderwaterTracker::step(scan)".
 #pragma once
 
 #include <cstddef>

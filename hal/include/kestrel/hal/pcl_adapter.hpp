@@ -1,25 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // Turns a decoded passive-radar (PCL) wire frame into the core's measurement
-// scan [Rb_m, dRb_mps] (docs/models.md, bistatic; paper 002 eq. 2):
-// Rb = bistatic_range_mm / 1000, dRb = -lambda * doppler_mhz / 1000, lambda
-// from the illuminator's carrier in the config (701 MHz: 0.4277 m). This is
-// the one place where PCL units change.
-//
-// Over-capacity rule (docs/scenarios.md): a frame may carry up to
-// kMaxPclCandidates (64); a scan holds kCapacity (32 for PCL-002). When the
-// frame carries more, exactly kCapacity candidates are kept, in frame order,
-// and the excess is dropped worst first by this order:
-//   1. farthest from every track: the largest min over the tracker's
-//      initialised tracks of nu^T S^-1 nu against the track's prediction at
-//      the frame time (kestrel/tracking/nearest_track.hpp) — a candidate a
-//      track could use is the last to go;
-//   2. then the lowest SNR;
-//   3. then the latest in frame order.
-// Without a tracker (or before any track exists) rule 1 ties for every
-// candidate and the rule is "lowest SNR first, then latest". The ranking
-// needs the tracker's state, so the adapter holds a read-only pointer to the
-// tracker it feeds; it never changes it. The result is kTooManyCandidates
-// with a usable scan (the Runner steps it and counts the status).
+// scan [Rb_m, dRb_mps] (paper 002 eq. 2): Rb = bistatic_range_mm / 1000,
+// dRb = -lambda * doppler_mhz / 1000, lambda from the illuminator's carrier
+// in the config. This is the one place where PCL units change. A frame with
+// more candidates than the scan holds keeps exactly kCapacity, in frame
+// order, and drops the excess worst first: farthest from every track, then
+// lowest SNR, then latest; the result is kTooManyCandidates with a usable
+// scan. Ranking by distance needs the tracker's state, so the adapter holds a
+// read-only pointer to the tracker it feeds and never changes it. The rule
+// and why: docs/pcl.md, "Front end: PCL frames to scans".
 #pragma once
 
 #include <cstddef>
