@@ -1,22 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// Global nearest neighbour (docs/tracking.md): the optimal assignment of
-// tracks (rows) to measurements (columns) on a bounded cost matrix, each
-// track taking at most one measurement and each measurement feeding at most
-// one track, minimising
-//     sum over assigned pairs cost(i, j) + miss_cost * (unassigned tracks).
-// A pair whose cost exceeds miss_cost (outside the gate) or is +Inf is never
-// assigned; unassigned measurements cost nothing. With cost = d2 (NIS) and
-// miss_cost = the gate's chi-square threshold this is the usual GNN.
-//
-// Solver: the Hungarian method with row/column potentials and shortest
-// augmenting paths (Kuhn-Munkres in the Jonker-Volgenant form), O(n^2 (m+n))
-// for n tracks and m measurements, on the n x (m + n) matrix where column
-// m + i is track i's private "miss" column (cost miss_cost, others
-// forbidden). Everything is fixed-size: the cost matrix is an Eigen matrix of
-// bounded dynamic size (kMaxTracks x kMaxMeasurements, no heap), the arrays
-// are members sized kMaxTracks + kMaxMeasurements, both loops of an augmentation
-// have constant bounds (a step adds one column to the tree; a path is at
-// most as long as the number of columns). No recursion, no allocation.
+// Global nearest neighbour (docs/tracking.md, "Association"): the optimal
+// assignment of tracks (rows) to measurements (columns) on a bounded cost
+// matrix, each track taking at most one measurement and each measurement
+// feeding at most one track, minimising the assigned costs plus miss_cost
+// per unassigned track; with cost = d2 and miss_cost = the gate's chi-square
+// threshold this is the usual GNN. Solved by the Hungarian method in the
+// Jonker-Volgenant form (shortest augmenting paths) with a private miss
+// column per track, on an Eigen matrix of bounded dynamic size
+// (kMaxTracks x kMaxMeasurements) and member arrays: every loop has a
+// constant bound, no recursion, no allocation.
 #pragma once
 
 #include <cstddef>

@@ -1,21 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// Robust gating of confirmed tracks: a Huber-type update with hard
-// rejection (Huber's psi on the Mahalanobis norm of the innovation, cut
-// off beyond an outer gate, as in Hampel's redescending M-estimators).
-// A plot inside the chi-square gate g updates the track as usual; one
-// between g and the outer gate g x factor is still taken, with its
-// innovation shrunk to the gate's boundary,
-//   nu' = nu sqrt(g / d2),  so nu'^T S^-1 nu' = g;
-// one beyond the outer gate is a miss. While the sensor's noise is several
-// times what the filter assumes (a burst), tracks keep taking their plots,
-// each moving the state no further than a plot on the gate's edge would,
-// instead of coasting to deletion; a gross outlier (hundreds of sigma)
-// stays outside the outer gate and cannot drag the track. A tracker built
-// with AdaptiveMeasurementNoise (tracking/measurement_noise.hpp) may also
-// let its confirmed tracks adapt their measurement noise to their
-// innovations under this gate (association/adaptive_noise.hpp), so that a
-// burst is fused with the R it has rather than clipped plot by plot with
-// the R the model assumes.
+// Robust gating of confirmed tracks: a Huber-type update with hard rejection
+// (Huber's psi on the Mahalanobis norm of the innovation, cut off beyond an
+// outer gate, as in Hampel's redescending M-estimators). A plot inside the
+// chi-square gate g updates as usual; one between g and the outer gate
+// g x factor is taken with its innovation shrunk to the gate's boundary,
+// nu' = nu sqrt(g / d2), so nu'^T S^-1 nu' = g; one beyond is a miss. In a
+// noise burst tracks keep taking their plots, each moving the state no
+// further than a plot on the gate's edge would, while a gross outlier cannot
+// drag the track. Under this gate a tracker built with
+// AdaptiveMeasurementNoise may also adapt R per track
+// (association/adaptive_noise.hpp). Why: docs/robustness.md, "The robust
+// gate".
 #pragma once
 
 #include "kestrel/filters/innovation.hpp"

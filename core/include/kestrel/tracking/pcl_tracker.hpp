@@ -1,20 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// The ready-made passive-radar (PCL) tracker of paper 002 and docs/scenarios.md
-// (PCL-002): a linear Kalman filter on the bistatic CV-1D model [Rb, dRb]
-// with the bistatic range / range-rate measurement (H = I), single-point
-// initiation with the zero-Doppler start veto, an ellipsoidal gate per track
-// (a tighter one for tentative tracks), and by default nearest-neighbour
-// association (one candidate per track, confirmed tracks first), 5-of-6
-// confirmation and deletion after a bounded coast or a bistatic-range
-// variance limit. The associator and the track manager are the tracker's
-// policies: GNN, PDA and the sequential track score compose the same way,
-// with one P_D and one clutter density for both.
-//
-// The filter is Ekf on linear models, which is exactly the linear KF (the
-// Jacobians are the constant F and H, so the EKF equations reduce to the KF
-// ones term for term); a separate kf.hpp would repeat the same Joseph-form
-// update. tests/core/tracking/pcl_model_test.cpp checks it against a
-// textbook KF written out by hand.
+// The ready-made passive-radar (PCL) tracker of paper 002 (PCL-002 in
+// docs/scenarios.md): a linear Kalman filter on the bistatic CV-1D model
+// [Rb, dRb] with the bistatic range / range-rate measurement (H = I),
+// single-point initiation with the zero-Doppler start veto, an ellipsoidal
+// gate per track (tighter for tentative tracks), and by default
+// nearest-neighbour association and 5-of-6 confirmation; GNN, PDA and the
+// sequential track score compose the same way. The filter is Ekf on linear
+// models, which is exactly the linear KF term for term
+// (tests/core/tracking/pcl_model_test.cpp checks it against a textbook KF),
+// so there is no separate kf.hpp. Parameters and choices: docs/pcl.md.
 #pragma once
 
 #include <cstddef>

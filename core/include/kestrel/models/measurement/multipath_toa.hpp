@@ -1,20 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// Time of arrival with multipath at a set of beacons (docs/models.md, "TOA
-// with multipath"; paper 003 eq. 1, 6 and 7). Each beacon i at b_i hears the
-// target at p twice: the direct path t_i = |p - b_i| / c, and the
-// seabed-reflected path, modelled by the image source mirrored across the
-// seabed at depth D, p' = [x, y, 2D - z], t_i' = |p' - b_i| / c (depth z
-// positive downward). The measurement vector holds every channel the model
-// can know, channel(i, path) = 2 i + path, so its size is fixed at
-// 2 * kMaxBeacons; a frame carries a subset of them and the channel-gated
-// EKF (filters/channel_gated_ekf.hpp) updates with exactly that subset.
-//
-// Jacobian rows (paper eq. 7 for the direct path):
-//   direct:    [(x-xi)/(d c), (y-yi)/(d c),  (z-zi)/(d c),       0,0,0, -d/c^2]
-//   reflected: [(x-xi)/(d'c), (y-yi)/(d'c), -(2D-z-zi)/(d'c),    0,0,0, -d'/c^2]
-// The reflected row's depth entry changes sign because the image source
-// moves up when the target moves down: this is what makes depth observable
-// when every beacon sits on the surface (docs/underwater.md).
+// Time of arrival with multipath at a set of beacons (paper 003 eq. 1, 6 and
+// 7; docs/models.md, "TOA with multipath"): each beacon hears the target on
+// the direct path and on the seabed-reflected one, modelled by the image
+// source mirrored across the seabed at depth D (depth z positive downward).
+// The measurement vector holds every channel the model can know,
+// channel(i, path) = 2 i + path, so its size is fixed at 2 * kMaxBeacons; a
+// frame carries a subset and the channel-gated EKF updates with exactly
+// that. The reflected Jacobian row's depth entry has the opposite sign to
+// the direct one (the image moves up when the target moves down), which is
+// what makes depth observable with every beacon at the surface
+// (docs/underwater.md).
 #pragma once
 
 #include <cstddef>

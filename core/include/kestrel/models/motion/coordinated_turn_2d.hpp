@@ -2,21 +2,14 @@
 // Coordinated-turn motion in the plane with the turn rate in the state
 // (CT-2D, the manoeuvre model of the IMM; Bar-Shalom, Li, Kirubarajan 2001,
 // section 11.7, the coordinated turn with unknown turn rate). State
-// X = [x vx y vy w]^T, w the turn rate in rad/s (counter-clockwise
-// positive). Over a step T with a = w T the speed is constant and the
-// velocity turns by a:
-//   x+  = x + s1 vx - c1 vy        vx+ = cos(a) vx - sin(a) vy
-//   y+  = y + c1 vx + s1 vy        vy+ = sin(a) vx + cos(a) vy
-//   w+  = w
-// with s1 = sin(a)/w and c1 = (1 - cos(a))/w. Both, and their
-// derivatives in w (the Jacobian's last column), are 0/0 at w = 0: below
-// |a| = kSeriesLimit they come from their Taylor series in a, so w -> 0 is
-// exactly constant velocity, with no division by w and no cancellation.
-// Process noise: white acceleration held over each step in x and y (DWNA,
-// as CV-2D: sa^2 [[T^4/4, T^3/2], [T^3/2, T^2]] per axis) and a turn-rate
-// random walk of standard deviation sw per sqrt(s) (Q_ww = sw^2 T). The
-// model is nonlinear, so it exposes no block structure: the Ekf takes its
-// dense path.
+// X = [x vx y vy w]^T, w in rad/s counter-clockwise; over a step T the speed
+// is constant and the velocity turns by a = w T. sin(a)/w, (1 - cos a)/w and
+// their derivatives in w are 0/0 at w = 0, so below |a| = kSeriesLimit they
+// come from their Taylor series in a: w -> 0 is exactly constant velocity,
+// with no division by w and no cancellation. Process noise: DWNA in x and y
+// (as CV-2D) and a turn-rate random walk (Q_ww = sw^2 T). Nonlinear, so it
+// exposes no block structure and the Ekf takes its dense path. Equations:
+// docs/imm.md, "CT-2D".
 #pragma once
 
 #include "kestrel/math/eigen.hpp"

@@ -1,17 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // CycleClock on the ARMv7-M Data Watchpoint and Trace unit (Cortex-M3/M4/M7):
 // CYCCNT counts core clock cycles in 32 bits and now_cycles() extends it to
-// 64 bits by counting the wraps it observes (docs/tracking.md: the board's
-// cycle counter feeds the runner's step statistics).
-//
-// A wrap is seen only if now_cycles() runs at least once per 2^32 cycles
-// (25.6 s at 168 MHz, 10.7 s at 400 MHz). The runner reads the clock twice
-// per frame around step(), so a quiet link may let the 64-bit value lag
-// behind real time by whole wraps; it stays monotonic, and the difference
-// across one step (what the statistics use) is exact for any step shorter
-// than 2^32 cycles. Main-loop use only: the wrap bookkeeping is not
-// interrupt-safe. Cortex-M0/M0+ have no CYCCNT: use SysTick or a timer.
-//
+// 64 bits by counting the wraps it observes, so it must run at least once
+// per 2^32 cycles (25.6 s at 168 MHz) to see every wrap. Across a quiet link
+// the 64-bit value may lag real time by whole wraps but stays monotonic, and
+// the difference across one step (what the runner's statistics use) is exact
+// for any step shorter than 2^32 cycles. Main-loop use only: the wrap
+// bookkeeping is not interrupt-safe. Cortex-M0/M0+ have no CYCCNT.
 // Registers: ARMv7-M Architecture Reference Manual (DDI 0403E) C1.6.5 DEMCR,
 // C1.8.7 DWT_CTRL / DWT_CYCCNT; the CoreSight lock (DWT_LAR) must be
 // unlocked on some Cortex-M7 parts (STM32F7/H7) and is harmless elsewhere.
