@@ -170,8 +170,8 @@ typename M::Cov transform_covariance(const M& motion, const typename M::Cov& P, 
 /// 21 of 36 coefficients for a 6 x 6, in one reduction as all_finite().
 /// With SIMD packets wider than two (float on SSE: four) the ragged column
 /// heads cost more than the whole matrix in full packets, so those take
-/// all_finite() of everything (measured on the float EKF-CA update: 46
-/// against 37 instructions per check).
+/// all_finite() of everything (docs/performance.md, "The covariance
+/// check").
 template <class S, int n>
 bool all_finite_mirrored(const Mat<S, n, n>& P) {
   if constexpr (std::is_floating_point_v<S> && Eigen::internal::packet_traits<S>::size > 2) {

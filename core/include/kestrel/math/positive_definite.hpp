@@ -25,11 +25,10 @@ namespace detail {
 // the diagonal of L. Each product L(i, k) w_k = L(i, k) L(j, k) D_k is
 // bounded by sqrt(P_ii P_jj) for a positive definite P, so fixed point
 // cannot overflow on a matrix that passes.
-// The floating-point form has its loops unrolled (192 instead of about 600
-// instructions at n = 6 on x86-64); the fixed-point form keeps them rolled,
-// because there every product is a 64-bit multiply-and-shift and the
-// unrolled copy costs a Cortex-M0+ image 1 KiB of text for no measurable
-// gain.
+// The floating-point form has its loops unrolled; the fixed-point form
+// keeps them rolled, because there every product is a 64-bit
+// multiply-and-shift and the unrolled copy costs a Cortex-M0+ image text it
+// cannot spare (figures: docs/performance.md, "The covariance check").
 // Fixed point: each column divides by its pivot through one prepared
 // reciprocal (FixedPoint::Divisor: 63 significant bits, a quotient within
 // 1.5 LSB of the rounded one) instead of a 64-step division per entry; a

@@ -125,9 +125,8 @@ struct PolarRadar {
 
   /// sqrt(x^2 + y^2). Floating point: the plain formula (no overflow below
   /// 1e154 m in double and 1e19 m in float, and within an ulp of
-  /// std::hypot, whose rescaling costs about a hundred instructions per
-  /// call, twice per update). Fixed point: its own hypot, which keeps the
-  /// squares inside the Q range.
+  /// std::hypot, whose rescaling is costly twice per update). Fixed point:
+  /// its own hypot, which keeps the squares inside the Q range.
   static Scalar range_of(Scalar px, Scalar py) {
     using T = ScalarTraits<Scalar>;
     if constexpr (T::kIsFixedPoint) {
