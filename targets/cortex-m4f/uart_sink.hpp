@@ -5,8 +5,8 @@
 // TX interrupt drains. publish() never waits: when the ring cannot take a
 // whole record it returns kTableFull and drops the report (the runner counts
 // it in publish_failures); a record is never split, so a consumer can
-// always resynchronise on the magic. The encoder and the sink were written
-// for this board and moved to targets/common when the Cortex-M7 board came.
+// always resynchronise on the magic. The encoder and the ring sink are the
+// shared ones of targets/common; this file binds them to USART2.
 #pragma once
 
 #include "kestrel/board/ktrk_record.hpp"

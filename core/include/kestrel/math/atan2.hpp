@@ -89,8 +89,8 @@ F deterministic_atan2(F y, F x) {
   // Zeros, infinities and NaNs: one well-predicted branch.
   if (!(a > F(0) && b > F(0) && a <= kMax && b <= kMax)) return detail::atan2_special(y, x);
   // t = n / d in (0, 1]. Plain branches: a branch-free form (the selects
-  // as table loads) was not faster in the CRPF (4 % slower in one noisy
-  // measurement), and in MC-001 the branches are well predicted.
+  // as table loads) was no faster in the CRPF (docs/filters.md), and in
+  // MC-001 the branches are well predicted.
   const bool swap = a > b;
   const bool x_neg = std::signbit(x);
   F n = swap ? b : a;

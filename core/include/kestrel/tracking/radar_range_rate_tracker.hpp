@@ -3,8 +3,9 @@
 // range rate: the same EKF on the CA-2D model, two-point initiation,
 // nearest-neighbour gating and M-of-N management, with the measurement
 // [range, bearing, range_rate] (models/measurement/polar_radar_range_rate.hpp).
-// The initiator differences positions as before (to_position() reads range
-// and bearing only); the first update then fuses the range rate. Boards
+// The initiator differences positions as the position-only tracker does
+// (to_position() reads range and bearing only); the first update then fuses
+// the range rate. Boards
 // feed it through hal::RadarAdapter, which refuses a frame with a plot
 // lacking range rate (kWrongKind) rather than inventing one.
 // Parameters and measured effect on S1/S2: docs/range_rate.md.
