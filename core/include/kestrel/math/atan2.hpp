@@ -5,12 +5,13 @@
 // does not across C libraries. fdlibm's atan (Sun 1993, s_atan.c) folded into
 // atan2: the ratio min/max of |y|, |x| reduced about 0, atan(1/2) or pi/4
 // with one division, fdlibm's 11-term odd polynomial on |u| <= 7/16, and an
-// octant constant stored as hi + lo; within 1 ulp of a correctly rounded
-// atan2 (tests/core/math/atan2_test.cpp). Special values follow C99 Annex F
-// as std::atan2 does. Only + - * / and sign-bit operations, so the bits hold
-// as long as a*b+c is not contracted into an FMA (kestrel::core compiles with
-// -ffp-contract=off). Why and what it cost: docs/filters.md, "CRPF h(x)
-// through the core's own atan2".
+// octant constant stored as hi + lo; tested within 1 ulp of glibc's
+// correctly rounded atan2 (tests/core/math/atan2_test.cpp). Special values
+// follow C99 Annex F as std::atan2 does. Only + - * / and sign-bit
+// operations, so the bits hold as long as a*b+c is not contracted into an
+// FMA (kestrel::core compiles with -ffp-contract=off). Why, and the
+// reduction in detail: docs/filters.md, "Choices beyond the paper", the
+// entry "CRPF h(x) through the core's own atan2".
 #pragma once
 
 #include <cmath>
