@@ -4,14 +4,14 @@
 // (dense / structured) on the CA-2D + polar radar models with the S1 sensor
 // and the tuned EKF-CA (bench_params()), fed by two-point initiation from S1
 // frames 0 and 1 and then predict + update on every later frame; and the
-// path classes of the host board's radar tracker, each with the StepStats
-// that prove a measured step took that path. A new filter joins both
-// programs with one line in for_each_ekf_case() or for_each_sigma_case()
-// (a new family needs a new function and, for kestrel-instr-count, a
-// translation unit of its own: instr_count.hpp); kTrackerPaths<F> = false
-// measures it as a filter only. The radar IMM (for_each_imm_case()) is
-// counted by kestrel-instr-count only, with its own defaults and the normal
-// and worst_case tracker paths.
+// path classes of the host board's radar tracker (kMaxTracks 16, kMaxPlots
+// 32, gate 99.9 %), each with the StepStats that prove a measured step took
+// that path. A new filter joins both programs with one line in
+// for_each_ekf_case() or for_each_sigma_case() (a new family needs a new
+// function and, for kestrel-instr-count, a translation unit of its own:
+// instr_count.hpp); kTrackerPaths<F> = false measures it as a filter only.
+// The radar IMM (for_each_imm_case()) is counted by kestrel-instr-count
+// only, with its own defaults and the normal and worst_case tracker paths.
 #pragma once
 
 #include <cmath>
