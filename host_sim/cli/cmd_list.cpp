@@ -27,8 +27,8 @@ int cmd_list(bool settings) {
     const struct {
       const char* title;
       std::vector<SettingInfo> table;
-    } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, pcl)", pcl_setting_table()},
-                  {"the underwater tracker (run -s uw003..., uw)", uw_setting_table()}};
+    } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, pcl, replay of a PCL stream)", pcl_setting_table()},
+                  {"the underwater tracker (run -s uw003..., uw, replay of a sonar stream)", uw_setting_table()}};
     for (const auto& t : others) {
       std::printf("keys of --set KEY=VALUE and --config FILE for %s:\n", t.title);
       for (const SettingInfo& i : t.table) {

@@ -6,6 +6,7 @@
 // reports are also CAT062. A PCL or sonar stream runs the tracker of its kind
 // with a scenario's sensor parameters and, with the truth CSV of its kind,
 // is scored with that kind's metrics, as `pcl` and `uw` score a run.
+// --config and --set take the keys of the stream's kind.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include "csv/step_csv.hpp"
 #include "csv/truth_csv.hpp"
 #include "filters/filter_registry.hpp"
+#include "filters/sensor_settings.hpp"
 #include "metrics/replay_scoring.hpp"
 #include "montecarlo/pcl_run.hpp"
 #include "montecarlo/single_run.hpp"
@@ -145,9 +147,9 @@ std::string fmt(const char* f, double v) {
 }
 
 OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
-                           std::uint64_t budget_ns, const std::filesystem::path& dir, const ReplayTruth* truth) {
+                           const PclTrackerParams& params, std::uint64_t budget_ns,
+                           const std::filesystem::path& dir, const ReplayTruth* truth) {
   const PclScenarioConfig sc = pcl_config_by_name(scenario_name);
-  const PclTrackerParams params = pcl_params_for(sc);
   const TrackerPolicies policies{};  // pcl's defaults: nearest neighbour, M-of-N
   // The truth names the target's detection of each frame; without it which
   // candidate is the target's is unknown.
@@ -197,6 +199,7 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
   }
   r.entry["sensor"] = pcl_scenario_json(sc);
   r.entry["tracker"] = pcl_tracker_json(params, policies);
+  r.entry["parameters"] = pcl_parameters(params);  // every key, as the run used it
   r.entry["confirmed_track_rows"] = rows;
   r.entry["frames_with_confirmed_track"] = frames_with_track;
   r.entry["track_ids"] = ids.size();
@@ -205,10 +208,10 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
   return r;
 }
 
-OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& scenario_name, std::uint64_t budget_ns,
+OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
+                          const UnderwaterTrackerParams& params, std::uint64_t budget_ns,
                           const std::filesystem::path& dir, const ReplayTruth* truth) {
   const UwScenarioConfig sc = uw_config_by_name(scenario_name);
-  const UnderwaterTrackerParams params = uw_params_for(sc);
   const UwRunOutput out = run_uw_stream(std::move(bytes), params, budget_ns);
   OtherKindResult r;
   r.stats = out.stats;
@@ -250,6 +253,7 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
   }
   r.entry["sensor"] = uw_scenario_json(sc);
   r.entry["tracker"] = uw_params_json(params);
+  r.entry["parameters"] = uw_parameters(params);  // every key, as the run used it
   r.entry["frames_with_estimate"] = reported;
   r.entry["track_ids"] = ids.size();
   r.entry["initialisations"] = fixes;
@@ -260,9 +264,11 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
 }
 
 /// `replay --stream` of a PCL or sonar stream: its one tracker through the
-/// same board loop, with the sensor parameters of a scenario of its kind.
+/// same board loop, with the sensor parameters of a scenario of its kind
+/// and then `settings` (--config, then --set) of that tracker's keys.
 int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<std::uint8_t> bytes,
-                      std::size_t frame_count, const std::string& source, const ReplayTruth* truth) {
+                      std::size_t frame_count, const std::string& source, const ReplayTruth* truth,
+                      const std::vector<Setting>& settings) {
   const std::string kind_name = sensor_kind_name(kind);
   check_filter_fits(o.filter, kind,
                     source + ": its " + std::to_string(frame_count) + " frames are " + kind_name + " frames");
@@ -275,12 +281,25 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
         "; " + source + " holds " + kind_name + " frames (" + kind_name +
         " scenarios: " + join_names(scenario_names_of_kind(kind)) + ")");
   }
+  check_settings_kind(settings, kind, source + " holds " + kind_name + " frames");
+  // The scenario's parameters under the settings, before anything is
+  // written: a value out of range stops the replay with no directory made.
+  PclTrackerParams pcl_params;
+  UnderwaterTrackerParams uw_params;
+  if (kind == hal::FrameKind::kPcl) {
+    pcl_params = pcl_params_for(pcl_config_by_name(scenario));
+    apply_pcl_settings(settings, pcl_params);
+  } else {
+    uw_params = uw_params_for(uw_config_by_name(scenario));
+    apply_uw_settings(settings, uw_params);
+  }
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   const std::string filter(kind == hal::FrameKind::kPcl ? kPclFilterName : kSonarFilterName);
-  OtherKindResult r = kind == hal::FrameKind::kPcl ? replay_pcl(std::move(bytes), scenario, budget_ns, dir, truth)
-                                                   : replay_uw(std::move(bytes), scenario, budget_ns, dir, truth);
+  OtherKindResult r = kind == hal::FrameKind::kPcl
+                          ? replay_pcl(std::move(bytes), scenario, pcl_params, budget_ns, dir, truth)
+                          : replay_uw(std::move(bytes), scenario, uw_params, budget_ns, dir, truth);
   const StepTiming timing = summarise_step_times(r.step_ns, budget_ns);
   const std::string sensor_scenario = r.entry["sensor"]["name"].get<std::string>();
 
@@ -302,6 +321,11 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   std::printf("replay %s: %s stream, %s tracker (%s) with the sensor parameters of %s%s\n", source.c_str(),
               kind_name.c_str(), kind == hal::FrameKind::kPcl ? "PCL" : "underwater", filter.c_str(), sensor_scenario.c_str(),
               o.scenario.empty() ? " (the default; --scenario chooses another)" : "");
+  if (!settings.empty()) {
+    std::printf("  parameters set by --config/--set:");
+    for (const Setting& st : settings) std::printf(" %s=%g", st.key.c_str(), st.value);
+    std::printf("\n");
+  }
   print_status_counts(r.stats);
   std::printf("%s\n", r.counts.c_str());
   print_timing(stdout, "replay " + source, timing);
@@ -377,6 +401,8 @@ int cmd_replay(const ReplayOptions& o) {
   if (int{!o.stream.empty()} + int{!o.csv.empty()} + int{!o.asterix.empty()} != 1) {
     throw std::invalid_argument("give exactly one of --stream, --csv and --asterix");
   }
+  // Read (file, syntax) now; whose keys they are is known with the stream's kind.
+  const std::vector<Setting> settings = read_settings(o.filter.config, o.filter.sets);
   std::vector<std::uint8_t> bytes;
   std::vector<MeasurementFrame> frames;
   std::string source;
@@ -440,7 +466,7 @@ int cmd_replay(const ReplayOptions& o) {
   if (kind != hal::FrameKind::kRadar) {
     if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
     return replay_other_kind(o, kind, std::move(bytes), frames.size() - skipped, source,
-                             replay_truth ? &*replay_truth : nullptr);
+                             replay_truth ? &*replay_truth : nullptr, settings);
   }
   if (!o.scenario.empty()) {
     throw std::invalid_argument("--scenario " + o.scenario + ": " + source +
@@ -448,15 +474,18 @@ int cmd_replay(const ReplayOptions& o) {
                                 "chooses the sensor parameters of a PCL or sonar stream)");
   }
   check_filter_fits(o.filter, kind, source + ": its " + std::to_string(frames.size() - skipped) + " frames are radar frames");
+  check_settings_kind(settings, kind, source + " holds radar frames");
+  FilterChoice choice = o.filter;
+  apply_filter_settings(choice, settings);
   if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
-  const FilterEntry& filter = find_filter(o.filter.filter);
+  const FilterEntry& filter = find_filter(choice.filter);
 
-  FilterOptions options = o.filter.options;
+  FilterOptions options = choice.options;
   // Gated as a board by default; --ungated or a board_gate setting say otherwise.
-  if (o.ungated && o.filter.board_gate_set && options.board_gate) {
+  if (o.ungated && choice.board_gate_set && options.board_gate) {
     throw std::invalid_argument("--ungated and the setting board_gate=true contradict each other");
   }
-  if (o.ungated || !o.filter.board_gate_set) options.board_gate = !o.ungated;
+  if (o.ungated || !choice.board_gate_set) options.board_gate = !o.ungated;
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
   ScoringConfig scoring;
   scoring.first_scored_step = o.first_scored_step;

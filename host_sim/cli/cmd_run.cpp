@@ -58,7 +58,7 @@ void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::st
   if (kind != hal::FrameKind::kRadar && !f.radar_only_given.empty()) {
     throw std::invalid_argument(what + "; " + join_names(f.radar_only_given) +
                                 " set the radar filters and do not apply (the " + kind_name +
-                                " tracker's keys: `run --set` / `--config`, `list --settings`; its other options: "
+                                " tracker's keys: `--set` / `--config`, `list --settings`; its other options: "
                                 "`kestrel-sim " + (kind == hal::FrameKind::kPcl ? "pcl" : "uw") + "`)");
   }
 }

@@ -42,6 +42,10 @@ void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::st
 /// std::invalid_argument or std::runtime_error for a bad file, key or value.
 void resolve_settings(FilterChoice& f, const std::vector<std::string>& sets);
 
+/// resolve_settings() of settings already read (replay reads them before
+/// it knows the stream's kind, whose keys they must be).
+void apply_filter_settings(FilterChoice& f, const std::vector<Setting>& settings);
+
 /// The settings of --config FILE (if not empty) and then of each --set, in
 /// order (filters/settings.hpp). Throws as read_config_file and parse_setting.
 std::vector<Setting> read_settings(const std::string& config, const std::vector<std::string>& sets);
@@ -131,7 +135,9 @@ struct ReplayOptions {
   std::size_t first_scored_step = 2;
   std::string out = "results/replay";
   /// --scenario: whose sensor parameters a PCL or sonar stream is run with
-  /// (default pcl002 / uw003); a radar stream takes none.
+  /// (default pcl002 / uw003); a radar stream takes none. --config and --set
+  /// (filter.config, filter.sets) are read with the keys of the stream's
+  /// kind, in cmd_replay, not by resolve_settings().
   std::string scenario;
   bool plots = true;
   /// Score as the papers score filters: confirmed tracks ungated. The

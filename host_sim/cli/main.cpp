@@ -224,9 +224,10 @@ int main(int argc, char** argv) {
   timing.filter.radar_only_given =
       given_options(timing_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm"});
   replay.filter.filter_given = replay_cmd->count("--filter") > 0;
+  // --config and --set take the keys of the stream's kind (cmd_replay).
   replay.filter.radar_only_given = given_options(
-      replay_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--config", "--set",
-                   "--asterix-out", "--sac", "--sic", "--ungated", "--loss-threshold-m", "--first-scored-step"});
+      replay_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm", "--asterix-out", "--sac",
+                   "--sic", "--ungated", "--loss-threshold-m", "--first-scored-step"});
 
   try {
     // --scalar picks the filter's build on that scalar (cli/cmd_scalars.hpp).
@@ -235,8 +236,9 @@ int main(int argc, char** argv) {
     }
     // --config, then --set, under the options of their own (cli/settings_options.cpp)
     // (sweep resolves its own: one of its --set is the swept parameter).
-    // A PCL or sonar run or timing reads its tracker's own keys.
-    for (FilterChoice* f : {&run.filter, &replay.filter, &timing.filter}) {
+    // A PCL or sonar run or timing reads its tracker's own keys; replay
+    // resolves its own once the stream's kind is known.
+    for (FilterChoice* f : {&run.filter, &timing.filter}) {
       if ((f != &run.filter || run_is_radar) && (f != &timing.filter || timing_is_radar)) resolve_settings(*f, f->sets);
     }
     if (app.got_subcommand("list")) return cmd_list(list_settings);

@@ -8,7 +8,10 @@
 namespace kestrel::sim::cli {
 
 void resolve_settings(FilterChoice& f, const std::vector<std::string>& sets) {
-  const std::vector<Setting> settings = read_settings(f.config, sets);
+  apply_filter_settings(f, read_settings(f.config, sets));
+}
+
+void apply_filter_settings(FilterChoice& f, const std::vector<Setting>& settings) {
   if (settings.empty()) return;
   for (const Setting& s : settings) f.board_gate_set = f.board_gate_set || s.key == "board_gate";
   // CLI11 has already written the flags into f.options: start again from

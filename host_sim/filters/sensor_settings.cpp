@@ -270,6 +270,60 @@ void apply_uw_settings(std::span<const Setting> settings, UnderwaterTrackerParam
   apply(settings, params, kUwKeys, "underwater");
 }
 
+namespace {
+
+const char* tracker_name(hal::FrameKind kind) {
+  switch (kind) {
+    case hal::FrameKind::kPcl: return "PCL";
+    case hal::FrameKind::kSonar: return "underwater";
+    default: return "radar";
+  }
+}
+
+bool tracker_takes(hal::FrameKind kind, const std::string& key) {
+  switch (kind) {
+    case hal::FrameKind::kPcl:
+      for (const auto& k : kPclKeys) {
+        if (key == k.key) return true;
+      }
+      return false;
+    case hal::FrameKind::kSonar:
+      for (const auto& k : kUwKeys) {
+        if (key == k.key) return true;
+      }
+      return false;
+    default:
+      // imm.KEY stands for every IMM parameter (apply_settings passes them on).
+      if (key.rfind("imm.", 0) == 0) return key.size() > 4;
+      for (const SettingInfo& i : setting_table()) {
+        if (key == i.key) return true;
+      }
+      return false;
+  }
+}
+
+}  // namespace
+
+void check_settings_kind(std::span<const Setting> settings, hal::FrameKind kind, const std::string& what) {
+  constexpr hal::FrameKind kKinds[] = {hal::FrameKind::kRadar, hal::FrameKind::kPcl, hal::FrameKind::kSonar};
+  for (const Setting& s : settings) {
+    if (tracker_takes(kind, s.key)) continue;
+    std::string owners;
+    int owner_count = 0;
+    for (const hal::FrameKind k : kKinds) {
+      if (!tracker_takes(k, s.key)) continue;
+      owners += std::string(owners.empty() ? "" : " and ") + tracker_name(k);
+      ++owner_count;
+    }
+    const std::string whose =
+        owners.empty() ? std::string("no tracker has it")
+                       : "it is a key of the " + owners + (owner_count > 1 ? " trackers" : " tracker");
+    throw std::invalid_argument(s.origin + " " + s.key + "=" + shortest(s.value) + ": '" + s.key +
+                                "' is not a key of the " + tracker_name(kind) + " tracker (" + what + "); " + whose +
+                                ". The keys of each tracker: `kestrel-sim list --settings`");
+  }
+}
+
 std::map<std::string, double> pcl_parameters(const PclTrackerParams& params) { return values(params, kPclKeys); }
 std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& params) { return values(params, kUwKeys); }
 

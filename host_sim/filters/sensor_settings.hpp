@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "filters/settings.hpp"
+#include "kestrel/hal/frame.hpp"
 #include "kestrel/tracking/pcl_tracker.hpp"
 #include "kestrel/tracking/underwater_tracker.hpp"
 
@@ -28,6 +29,14 @@ void apply_uw_settings(std::span<const Setting> settings, UnderwaterTrackerParam
 /// Every key with its value in `params`, for the summary's "parameters".
 std::map<std::string, double> pcl_parameters(const PclTrackerParams& params);
 std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& params);
+
+/// Throws std::invalid_argument unless every setting is a key of the
+/// tracker of `kind`'s frames (the radar keys of setting_table(), the PCL
+/// or the underwater tracker's), naming the key, where it was given, the
+/// tracker it belongs to if any, `what` (e.g. "FILE holds PCL frames") and
+/// `list --settings`. For `replay`, which learns the kind from its input:
+/// a key of another tracker is refused as such, never applied or ignored.
+void check_settings_kind(std::span<const Setting> settings, hal::FrameKind kind, const std::string& what);
 
 /// Every key, its default (for the keys a scenario sets, "the scenario's"
 /// with pcl002's / uw003's value), range and meaning, in docs order.

@@ -41,12 +41,97 @@ if(CHECK STREQUAL "replay_wrong_kind")
   endif()
   expect_replay_error(r2 "--scenario 'uw003' is a sonar scenario; .*pcl.kstr holds PCL frames"
                       --stream ${OUT}/pcl.kstr --scenario uw003)
-  expect_replay_error(r3 "--qj, --set set the radar filters and do not apply"
+  expect_replay_error(r3 "--qj set the radar filters and do not apply"
                       --stream ${OUT}/pcl.kstr --qj 5 --set confirm_m=3)
+  expect_replay_error(r4 "--board-gate, --robust-gate set the radar filters and do not apply"
+                      --stream ${OUT}/pcl.kstr --board-gate --robust-gate 25)
   # A radar stream with the PCL tracker, and with a PCL scenario.
   execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
   expect_replay_error(r5 "frames are radar frames; filter 'pcl-kf' takes PCL frames" --stream ${OUT}/s1.kstr -f pcl-kf)
   expect_replay_error(r6 "--scenario pcl002: .*s1.kstr holds radar frames" --stream ${OUT}/s1.kstr -s pcl002)
+elseif(CHECK STREQUAL "replay_settings")
+  # replay of a PCL (sonar) stream reads --config and then --set with the
+  # PCL (underwater) tracker's keys: they change the run and summary.json
+  # echoes them. A key of another tracker is refused naming it, the
+  # stream's kind and `list --settings`, with nothing written; a radar
+  # stream keeps the radar keys.
+  generate_stream(pcl002 pcl)
+  generate_stream(uw003 uw)
+  execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
+  function(replay_ok dir)
+    execute_process(COMMAND ${SIM} replay ${ARGN} --no-plots --out ${OUT}/${dir}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "replay ${ARGN} failed (${rc}):\n${out}${err}")
+    endif()
+    set(out "${out}" PARENT_SCOPE)
+    file(READ ${OUT}/${dir}/summary.json summary)
+    set(summary "${summary}" PARENT_SCOPE)
+  endfunction()
+
+  replay_ok(pcl_default --stream ${OUT}/pcl.kstr --truth ${OUT}/pcl.truth.csv)
+  string(JSON default_m GET "${summary}" results replay pcl-kf parameters confirm_m)
+  string(JSON default_rows GET "${summary}" results replay pcl-kf confirmed_track_rows)
+  string(JSON default_confirm GET "${summary}" results replay pcl-kf time_to_first_confirmation_s mean)
+  file(WRITE ${OUT}/pcl.json "{\"confirm_m\": 4, \"accel_sigma_mps2\": 3}")
+  replay_ok(pcl_set --stream ${OUT}/pcl.kstr --truth ${OUT}/pcl.truth.csv --config ${OUT}/pcl.json --set confirm_m=2)
+  if(NOT out MATCHES "parameters set by --config/--set: [^\n]*confirm_m=4 confirm_m=2\n")
+    message(FATAL_ERROR "replay did not print the parameters set:\n${out}")
+  endif()
+  foreach(pair "parameters;confirm_m;2" "parameters;accel_sigma_mps2;3" "tracker;confirm_m;2"
+               "tracker;accel_sigma_mps2;3" "parameters;confirm_n;6")
+    list(GET pair 0 field)
+    list(GET pair 1 key)
+    list(GET pair 2 want)
+    string(JSON got GET "${summary}" results replay pcl-kf ${field} ${key})
+    if(NOT got EQUAL want)
+      message(FATAL_ERROR "summary.json ${field}.${key} is ${got}, expected ${want}")
+    endif()
+  endforeach()
+  # 2-of-6 confirms sooner than pcl002's 5-of-6: more confirmed-track rows.
+  string(JSON rows GET "${summary}" results replay pcl-kf confirmed_track_rows)
+  string(JSON confirm GET "${summary}" results replay pcl-kf time_to_first_confirmation_s mean)
+  if(NOT default_m EQUAL 5 OR NOT rows GREATER default_rows OR NOT confirm LESS default_confirm)
+    message(FATAL_ERROR "confirm_m=2 did not change the run: confirm_m ${default_m} -> 2, confirmed-track rows "
+                        "${default_rows} -> ${rows}, first confirmation ${default_confirm} -> ${confirm} s")
+  endif()
+
+  replay_ok(uw_default --stream ${OUT}/uw.kstr)
+  replay_ok(uw_set --stream ${OUT}/uw.kstr --set per_channel_gate=false)
+  string(JSON gate GET "${summary}" results replay uw-ekf parameters per_channel_gate)
+  string(JSON tracker_gate GET "${summary}" results replay uw-ekf tracker per_channel_gate)
+  if(NOT gate EQUAL 0 OR (NOT tracker_gate STREQUAL "OFF" AND NOT tracker_gate STREQUAL "false"))
+    message(FATAL_ERROR "summary.json per_channel_gate: parameters ${gate}, tracker ${tracker_gate}")
+  endif()
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/uw_default/uw_track.csv ${OUT}/uw_set/uw_track.csv
+                  RESULT_VARIABLE rc)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "per_channel_gate=false did not change uw_track.csv")
+  endif()
+
+  # A radar stream still takes the radar keys.
+  replay_ok(s1_set --stream ${OUT}/s1.kstr --set qj=50)
+  string(JSON qj GET "${summary}" results replay ekf-ca parameters qj)
+  if(NOT qj EQUAL 50)
+    message(FATAL_ERROR "radar replay --set qj=50: summary.json parameters.qj is ${qj}")
+  endif()
+
+  file(WRITE ${OUT}/radar.json "{\"gate_d2\": 13.8}")
+  set(keys "The keys of each tracker: `kestrel-sim list --settings`")
+  expect_replay_error(e1 "--set qj=5: 'qj' is not a key of the PCL tracker \\([^)]*pcl.kstr holds PCL frames\\); it is a key of the radar tracker. ${keys}"
+                      --stream ${OUT}/pcl.kstr --set confirm_m=3 --set qj=5)
+  expect_replay_error(e2 "--config [^ ]*radar.json: gate_d2=13.8: 'gate_d2' is not a key of the PCL tracker"
+                      --stream ${OUT}/pcl.kstr --config ${OUT}/radar.json)
+  expect_replay_error(e3 "--set confirm_m=3: 'confirm_m' is not a key of the underwater tracker \\([^)]*uw.kstr holds sonar frames\\); it is a key of the radar and PCL trackers. ${keys}"
+                      --stream ${OUT}/uw.kstr --set confirm_m=3)
+  expect_replay_error(e4 "--set sigma_rb_m=12: 'sigma_rb_m' is not a key of the radar tracker \\([^)]*s1.kstr holds radar frames\\); it is a key of the PCL tracker"
+                      --stream ${OUT}/s1.kstr --set sigma_rb_m=12)
+  expect_replay_error(e5 "--set confirm_m=9: out of range \\(whole, 1..8\\)" --stream ${OUT}/pcl.kstr --set confirm_m=9)
+  foreach(dir e1 e2 e3 e4 e5)
+    if(EXISTS ${OUT}/${dir})
+      message(FATAL_ERROR "a refused replay made its --out directory ${dir}")
+    endif()
+  endforeach()
 elseif(CHECK STREQUAL "replay_mixed_kinds")
   # A stream holding PCL and sonar frames is refused, naming the counts.
   generate_stream(pcl002 pcl)

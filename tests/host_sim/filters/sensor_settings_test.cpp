@@ -137,3 +137,37 @@ SCENARIO("docs/parameters.md gives every PCL and underwater key with its default
     }
   }
 }
+
+SCENARIO("A key of another tracker than the one of the frames' kind is refused as such", "[settings][replay]") {
+  const auto refused = [](const std::vector<std::string>& texts, hal::FrameKind kind) -> std::string {
+    try {
+      check_settings_kind(sets(texts), kind, "s.kstr holds frames of that kind");
+    } catch (const std::invalid_argument& e) {
+      return e.what();
+    }
+    return "";
+  };
+  GIVEN("keys of each tracker") {
+    THEN("each tracker takes its own, a key two trackers share included") {
+      CHECK(refused({"qj=5", "confirm_m=3", "imm.p_stay=0.9", "board_gate=true"}, hal::FrameKind::kRadar).empty());
+      CHECK(refused({"sigma_rb_m=12", "confirm_m=3", "gate_confirmed=0.999"}, hal::FrameKind::kPcl).empty());
+      CHECK(refused({"gate_k_sigma=3", "per_channel_gate=false"}, hal::FrameKind::kSonar).empty());
+    }
+    THEN("a key of another tracker names itself, the kind's tracker, whose key it is and list --settings") {
+      CHECK_THAT(refused({"confirm_m=3", "qj=5"}, hal::FrameKind::kPcl),
+                 Catch::Equals("--set qj=5: 'qj' is not a key of the PCL tracker (s.kstr holds frames of that kind); "
+                               "it is a key of the radar tracker. The keys of each tracker: `kestrel-sim list "
+                               "--settings`"));
+      CHECK_THAT(refused({"confirm_m=3"}, hal::FrameKind::kSonar),
+                 Catch::Contains("'confirm_m' is not a key of the underwater tracker") &&
+                     Catch::Contains("it is a key of the radar and PCL trackers."));
+      CHECK_THAT(refused({"gate_k_sigma=3"}, hal::FrameKind::kRadar),
+                 Catch::Contains("--set gate_k_sigma=3: 'gate_k_sigma' is not a key of the radar tracker") &&
+                     Catch::Contains("it is a key of the underwater tracker"));
+      CHECK_THAT(refused({"imm.p_stay=0.9"}, hal::FrameKind::kPcl), Catch::Contains("a key of the radar tracker"));
+      CHECK_THAT(refused({"sa=1"}, hal::FrameKind::kSonar),
+                 Catch::Contains("'sa' is not a key of the underwater tracker") &&
+                     Catch::Contains("no tracker has it") && Catch::Contains("`kestrel-sim list --settings`"));
+    }
+  }
+}
