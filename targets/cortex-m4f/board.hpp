@@ -27,7 +27,10 @@ namespace kestrel::m4f {
 using Feed = UartRingFeed;
 using Clock = DwtCycleClock;
 using Sink = UartTxSink;
-using Tracker = RadarTracker<EkfCa<float>, kMaxTracks, kMaxPlots>;
+// P checked at every predict: the once-per-frame check is faster but puts
+// this image over 16 KiB (docs/performance.md, "Once per frame").
+using TrackFilter = EkfCaCheckedEachPredict<float>;
+using Tracker = RadarTracker<TrackFilter, kMaxTracks, kMaxPlots>;
 using Adapter = hal::RadarAdapter;
 using Runner = hal::Runner<Feed, Clock, Tracker, Adapter, Sink>;
 

@@ -13,7 +13,7 @@ namespace {
 
 using namespace kestrel::m4f;
 
-Tracker g_tracker = kestrel::make_radar_tracker<float, kMaxTracks, kMaxPlots>(kestrel::RadarTrackerParams{});
+Tracker g_tracker = kestrel::make_radar_tracker<float, kMaxTracks, kMaxPlots, TrackFilter>(kestrel::RadarTrackerParams{});
 Feed g_feed{usart2_rx_ring()};
 Clock g_clock{};
 Sink g_sink{usart2_tx_ring()};

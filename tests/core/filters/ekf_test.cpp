@@ -173,3 +173,113 @@ SCENARIO("the EKF refuses bad input and keeps its state", "[ekf][status]") {
     }
   }
 }
+
+namespace {
+
+template <class S>
+using CaEkf = kestrel::Ekf<kestrel::ConstantAcceleration2D<S>, kestrel::PolarRadar<kestrel::ConstantAcceleration2D<S>>>;
+
+/// EKF-CA (qj 16, 3 m, 5 mrad) started at an S1-like state with P = 100 I.
+template <class S>
+CaEkf<S> started_ca_ekf() {
+  kestrel::ConstantAcceleration2D<S> motion;
+  motion.qj = S(16);
+  kestrel::PolarRadar<kestrel::ConstantAcceleration2D<S>> radar;
+  radar.sigma_range_m = S(3);
+  radar.sigma_bearing_rad = S(0.005);
+  CaEkf<S> ekf(motion, radar);
+  typename CaEkf<S>::State x0;
+  x0 << S(-15000), S(200), S(0), S(8000), S(125), S(0);
+  REQUIRE(ekf.reset(x0, CaEkf<S>::Cov::Identity() * S(100)) == kestrel::Status::kOk);
+  return ekf;
+}
+
+}  // namespace
+
+TEMPLATE_TEST_CASE("Scenario: a prediction committed unchecked is checked by the update or by verify_prediction",
+                   "[ekf][status][pd]", double, float) {
+  using S = TestType;
+  using Filter = CaEkf<S>;
+  Filter ekf = started_ca_ekf<S>();
+  const typename Filter::MeasVec z(S(std::hypot(-14900.0, 8062.5)), S(std::atan2(8062.5, -14900.0)));
+
+  GIVEN("a sound prediction") {
+    Filter checked = ekf;
+    REQUIRE(checked.predict(S(0.5)) == kestrel::Status::kOk);
+    REQUIRE(ekf.predict_unverified(S(0.5)) == kestrel::Status::kOk);
+    THEN("it is predict()'s, bit for bit, and passes the check") {
+      CHECK(ekf.x() == checked.x());
+      CHECK(ekf.P() == checked.P());
+      CHECK(ekf.verify_prediction() == kestrel::Status::kOk);
+    }
+  }
+  GIVEN("a process noise that makes only the acceleration block indefinite") {
+    // Q's acceleration variance dt qj is -500 on each axis against P's 100;
+    // its position entries (dt^5 / 20 qj = -1.6) stay far below P's, so S is
+    // still positive definite and only the update's own check can find it.
+    ekf.motion().qj = S(-1000);
+    Filter refused = ekf;
+    CHECK(refused.predict(S(0.5)) == kestrel::Status::kNotPositiveDefinite);
+    CHECK(refused.x() == ekf.x());
+    REQUIRE(ekf.predict_unverified(S(0.5)) == kestrel::Status::kOk);
+    REQUIRE_FALSE(kestrel::is_positive_definite(ekf.P()));
+    const typename Filter::Cov P_pred = ekf.P();
+    THEN("verify_prediction() reports it") {
+      CHECK(ekf.verify_prediction() == kestrel::Status::kNotPositiveDefinite);
+    }
+    THEN("the innovation's S is still positive definite") {
+      CHECK(ekf.innovation(z).status == kestrel::Status::kOk);
+    }
+    THEN("the update refuses it and leaves the filter unchanged") {
+      CHECK(ekf.update(z) == kestrel::Status::kNotPositiveDefinite);
+      CHECK(ekf.P() == P_pred);
+    }
+    THEN("the probabilistic update refuses it") {
+      const typename Filter::MeasVec zs[1] = {z};
+      const S beta[1] = {S(0.4)};
+      CHECK(ekf.update_pda(zs, beta, 1, S(0.6)) == kestrel::Status::kNotPositiveDefinite);
+      CHECK(ekf.P() == P_pred);
+    }
+  }
+}
+
+TEMPLATE_TEST_CASE("Scenario: the taken plot's innovation is formed once and gives update(z)'s result",
+                   "[ekf][structured]", double, float) {
+  using S = TestType;
+  using Filter = CaEkf<S>;
+  Filter ekf = started_ca_ekf<S>();
+  REQUIRE(ekf.predict(S(0.5)) == kestrel::Status::kOk);
+  const typename Filter::MeasVec z(S(std::hypot(-14895.0, 8065.0)), S(std::atan2(8065.0, -14895.0)));
+
+  GIVEN("the distance the gate took and the innovation formed from it") {
+    const auto distance = ekf.predicted_measurement().distance(z);
+    const auto from_distance = ekf.innovation(z, distance);
+    const auto full = ekf.innovation(z);
+    THEN("it is innovation(z), bit for bit") {
+      REQUIRE(full.status == kestrel::Status::kOk);
+      CHECK(from_distance.status == full.status);
+      CHECK(from_distance.nu == full.nu);
+      CHECK(from_distance.S == full.S);
+      CHECK(from_distance.d2 == full.d2);
+    }
+    THEN("updating from it is update(z), bit for bit") {
+      Filter reference = ekf;
+      REQUIRE(reference.update(z) == kestrel::Status::kOk);
+      REQUIRE(ekf.update_innovation(from_distance) == kestrel::Status::kOk);
+      CHECK(ekf.x() == reference.x());
+      CHECK(ekf.P() == reference.P());
+      CHECK(ekf.diagnostics().nis == reference.diagnostics().nis);
+      CHECK(ekf.diagnostics().fused);
+    }
+  }
+  GIVEN("an innovation that was refused") {
+    const auto refused = ekf.innovation(typename Filter::MeasVec(std::numeric_limits<S>::quiet_NaN(), S(0.5)));
+    REQUIRE(refused.status == kestrel::Status::kNonFinite);
+    const typename Filter::State x_before = ekf.x();
+    THEN("the update returns its status and keeps the state") {
+      CHECK(ekf.update_innovation(refused) == kestrel::Status::kNonFinite);
+      CHECK(ekf.x() == x_before);
+      CHECK_FALSE(ekf.diagnostics().fused);
+    }
+  }
+}

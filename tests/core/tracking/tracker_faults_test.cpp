@@ -186,6 +186,9 @@ struct FaultyEkf : kestrel::EkfCa<S> {
   static inline bool fail_predict = false;
   static inline bool negative_variance = false;
   Status predict(S dt) { return fail_predict ? Status::kNotPositiveDefinite : Base::predict(dt); }
+  // Checked at every predict, as a filter without the once-per-frame check
+  // is (VerifiesPredictionLater): the tracker then also reads P's variances.
+  Status predict_unverified(S dt) = delete;
   typename Base::Cov P() const {
     typename Base::Cov P = Base::P();
     if (negative_variance) P(0, 0) = S(-196.75);
@@ -195,20 +198,15 @@ struct FaultyEkf : kestrel::EkfCa<S> {
 
 }  // namespace
 
+static_assert(!kestrel::VerifiesPredictionLater<FaultyEkf<double>>);
+
 SCENARIO("a track whose covariance is unhealthy is deleted, never reported", "[tracker][pd]") {
   using S = double;
   using F = FaultyEkf<S>;
-  using Init = kestrel::TwoPointInitiator<kestrel::CaMotion<S>, kestrel::CaPolarRadar<S>>;
-  using T = kestrel::Tracker<F, Init, 4, 8>;
   kestrel::RadarTrackerParams p;
   p.qj = 16.0;
-  const auto base = kestrel::make_radar_tracker<S, 4, 8>(p);
-  kestrel::CaMotion<S> motion;
-  motion.qj = p.qj;
-  kestrel::CaPolarRadar<S> radar;
-  radar.sigma_range_m = p.sigma_range_m;
-  radar.sigma_bearing_rad = p.sigma_bearing_rad;
-  T tracker(F(motion, radar), Init{radar, p.max_speed_mps, p.init_accel_sigma_mps2}, base.config());
+  auto tracker = kestrel::make_radar_tracker<S, 4, 8, F>(p);
+  using T = decltype(tracker);
   F::fail_predict = false;
   F::negative_variance = false;
   for (int k = 0; k < 6; ++k) REQUIRE(tracker.step(plot_scan<T>(k * kFrameUs, 0.5 * k)) == Status::kOk);
@@ -234,4 +232,112 @@ SCENARIO("a track whose covariance is unhealthy is deleted, never reported", "[t
       CHECK(tracker.reports().empty());
     }
   }
+}
+
+namespace {
+
+/// EKF-CA whose process noise can be made indefinite (a negative jerk
+/// density), so that the prediction it commits unchecked is really not
+/// positive definite: what the tracker's once-per-frame check must find.
+template <class S>
+struct IndefinitePredictionEkf : kestrel::EkfCa<S> {
+  using Base = kestrel::EkfCa<S>;
+  using Base::Base;
+  static inline bool indefinite = false;
+  Status predict_unverified(S dt) {
+    if (indefinite) this->motion().qj = S(-1e6);
+    return Base::predict_unverified(dt);
+  }
+};
+
+}  // namespace
+
+static_assert(kestrel::VerifiesPredictionLater<kestrel::EkfCa<double>>);
+static_assert(kestrel::VerifiesPredictionLater<kestrel::EkfCa<float>>);
+
+TEMPLATE_TEST_CASE("Scenario: a prediction committed unchecked that is not positive definite deletes its track",
+                   "[tracker][pd]", double, float) {
+  using S = TestType;
+  using F = IndefinitePredictionEkf<S>;
+  kestrel::RadarTrackerParams p;
+  p.qj = 16.0;
+  auto tracker = kestrel::make_radar_tracker<S, 4, 8, F>(p);
+  using T = decltype(tracker);
+  F::indefinite = false;
+  for (int k = 0; k < 6; ++k) REQUIRE(tracker.step(plot_scan<T>(k * kFrameUs, 0.5 * k)) == Status::kOk);
+  REQUIRE(tracker.reports().size() == 1);
+  REQUIRE(tracker.reports()[0].status == TrackStatus::kConfirmed);
+
+  WHEN("the track takes its plot in that frame") {
+    F::indefinite = true;
+    REQUIRE(tracker.step(plot_scan<T>(6 * kFrameUs, 3.0)) == Status::kOk);
+    F::indefinite = false;
+    THEN("the track is deleted and never reported; its plot starts a new one") {
+      CHECK(tracker.last_step().unhealthy == 1);
+      CHECK(tracker.last_step().deleted == 1);
+      CHECK(tracker.last_step().associated == 0);
+      CHECK(tracker.last_step().seeded == 1);
+      CHECK(tracker.reports().empty());
+      CHECK(all_positive_definite(tracker));
+    }
+  }
+  WHEN("the frame has no plot") {
+    F::indefinite = true;
+    typename T::Scan empty;
+    empty.t_us = 6 * kFrameUs;
+    empty.count = 0;
+    REQUIRE(tracker.step(empty) == Status::kOk);
+    F::indefinite = false;
+    THEN("the end-of-frame check finds it: the track is deleted and never reported") {
+      CHECK(tracker.last_step().unhealthy == 1);
+      CHECK(tracker.last_step().deleted == 1);
+      CHECK(tracker.last_step().failure == Status::kNotPositiveDefinite);
+      CHECK(tracker.reports().empty());
+      CHECK(tracker.tracks().size() == 0);
+    }
+  }
+  WHEN("the prediction stays sound") {
+    typename T::Scan empty;
+    empty.t_us = 6 * kFrameUs;
+    empty.count = 0;
+    REQUIRE(tracker.step(empty) == Status::kOk);
+    THEN("a coasting track is checked and kept") {
+      CHECK(tracker.last_step().unhealthy == 0);
+      CHECK(tracker.last_step().deleted == 0);
+      REQUIRE(tracker.reports().size() == 1);
+      CHECK(all_positive_definite(tracker));
+    }
+  }
+}
+
+static_assert(!kestrel::VerifiesPredictionLater<kestrel::EkfCaCheckedEachPredict<float>>);
+
+TEMPLATE_TEST_CASE("Scenario: checking P once per frame or at every predict gives the same tracks, bit for bit",
+                   "[tracker][pd]", double, float) {
+  using S = TestType;
+  kestrel::RadarTrackerParams p;
+  p.qj = 16.0;
+  auto once = kestrel::make_radar_tracker<S, 4, 8>(p);
+  auto each = kestrel::make_radar_tracker<S, 4, 8, kestrel::EkfCaCheckedEachPredict<S>>(p);
+  using T = decltype(once);
+  std::size_t reported = 0;
+  for (int k = 0; k < 60; ++k) {
+    auto scan = plot_scan<T>(k * kFrameUs, 0.5 * k);
+    if (k % 4 == 3) scan.count = 0;  // coasting frames: P checked at the end of the frame
+    typename decltype(each)::Scan scan_each;
+    scan_each.t_us = scan.t_us;
+    scan_each.count = scan.count;
+    scan_each.z[0] = scan.z[0];
+    REQUIRE(once.step(scan) == Status::kOk);
+    REQUIRE(each.step(scan_each) == Status::kOk);
+    REQUIRE(once.reports().size() == each.reports().size());
+    for (std::size_t i = 0; i < once.reports().size(); ++i) {
+      CHECK(once.reports()[i].track_id == each.reports()[i].track_id);
+      CHECK(once.reports()[i].nis == each.reports()[i].nis);
+      CHECK(once.reports()[i].x == each.reports()[i].x);
+      CHECK(once.reports()[i].P == each.reports()[i].P);
+    }
+    reported += once.reports().size();
+  }
+  CHECK(reported > 50);
 }

@@ -13,6 +13,8 @@
 // track associated, every other plot dropped, a report per track).
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include "board.hpp"
 #include "kestrel/board/worst_case_frame.hpp"
@@ -31,18 +33,20 @@ constexpr std::size_t kTracks = Tracker::Table::kMaxTracks;
 constexpr std::size_t kPlots = Scan::kMaxMeasurements;
 constexpr std::size_t kCounted = kestrel::board::kWorstCaseCountedFrames;
 
-// As the board's main.cpp builds it (targets/<board>/main.cpp). Called from
-// run(): without start files no static constructor runs.
+// As the board's main.cpp builds it (targets/<board>/main.cpp), with the
+// board's filter type. Called from run(): without start files no static
+// constructor runs.
+using TrackFilter = std::remove_cvref_t<decltype(std::declval<const Tracker&>().prototype_filter())>;
 #if defined(KESTREL_WF_CONSTEXPR_SCALARS)
 constexpr kestrel::RadarTrackerParams kParams{};
 constexpr kestrel::RadarTrackerScalars<Tracker::Scalar> kScalars =
     kestrel::radar_tracker_scalars<Tracker::Scalar>(kParams);
 Tracker make_board_tracker() {
-  return kestrel::make_radar_tracker<Tracker::Scalar, kMaxTracks, kMaxPlots>(kParams, kScalars);
+  return kestrel::make_radar_tracker<Tracker::Scalar, kMaxTracks, kMaxPlots, TrackFilter>(kParams, kScalars);
 }
 #else
 Tracker make_board_tracker() {
-  return kestrel::make_radar_tracker<Tracker::Scalar, kMaxTracks, kMaxPlots>(kestrel::RadarTrackerParams{});
+  return kestrel::make_radar_tracker<Tracker::Scalar, kMaxTracks, kMaxPlots, TrackFilter>(kestrel::RadarTrackerParams{});
 }
 #endif
 kestrel::hal::Frame g_frame{};

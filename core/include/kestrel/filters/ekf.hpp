@@ -87,16 +87,20 @@ class Ekf {
 
   /// Predict by dt seconds with the model's process noise Q(dt).
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
-  [[nodiscard]] Status predict(Scalar dt) {
-    if constexpr (kBlockPredict) {
-      // F P F^T and Q per axis block.
-      Cov P = structure::transform_covariance(motion_, P_, dt);
-      structure::add_process_noise(motion_, P, dt);
-      return commit_prediction(motion_.propagate(x_, dt), P);
-    } else {
-      return predict(dt, motion_.process_noise(dt));
-    }
-  }
+  [[nodiscard]] Status predict(Scalar dt) { return predict_checked<true>(dt); }
+
+  /// predict(dt) committed without its covariance check, for a caller that
+  /// checks P once per frame (Tracker, VerifiesPredictionLater): every update
+  /// commits P+ = P - K S K^T with S positive definite, so P+ passes its
+  /// check only if the predicted P does (to rounding), and a P no update
+  /// follows is checked by verify_prediction(). update_pda(), whose P+ is
+  /// not below P, checks P first.
+  /// @return kOk (a non-finite or indefinite result is found later).
+  [[nodiscard]] Status predict_unverified(Scalar dt) { return predict_checked<false>(dt); }
+
+  /// The check predict() makes, of the current x and P.
+  /// @return kOk; kNonFinite or kNotPositiveDefinite.
+  [[nodiscard]] Status verify_prediction() const { return state_status(x_, P_); }
 
   /// Predict by dt seconds with an explicit process noise Q (adaptive filters).
   /// @return kOk; kNonFinite or kNotPositiveDefinite (filter unchanged).
@@ -152,6 +156,17 @@ class Ekf {
     } else {
       return innovation(z, measurement_.noise());
     }
+  }
+
+  /// innovation(z) of a plot whose distance was taken from this state's
+  /// predicted_measurement() (the plot a track takes after its gate): the
+  /// same nu, S, d2 and status, without whitening nu a second time.
+  template <bool kEnabled = kSparseUpdate>
+    requires kEnabled
+  Innov innovation(const MeasVec& z, const PlotDistance<Scalar>& d) const {
+    if (d.status != Status::kOk) return innovation(z);
+    const auto& lin = factored_linearisation();
+    return Innov{measurement_.residual(z, lin.z_hat), lin.S, d.d2, Status::kOk};
   }
 
   /// What a plot's distance needs besides h(x), per form: the lower factor
@@ -270,6 +285,24 @@ class Ekf {
     }
   }
 
+  /// update(z) given in = innovation(z) taken at this state (the plot a
+  /// tracker's gate passed): the residual is not formed again. An `in` of
+  /// another state or plot gives a wrong update, not a refused one.
+  /// @return as update(z); a status of `in` other than kOk, as is.
+  template <bool kEnabled = kSparseUpdate>
+    requires kEnabled
+  [[nodiscard]] Status update_innovation(const Innov& in) {
+    diag_.fused = false;
+    if (in.status != Status::kOk) return fail(in.status);
+    const auto& lin = factored_linearisation();
+    KESTREL_TRY_OR(fail, lin.factor_status);
+    if constexpr (kWhitenedSparse) {
+      return fold_in_whitened(in.nu, lin.S, lin.Jw, factor_of(lin));
+    } else {
+      return fold_in(in.nu, lin.S, lin.L);
+    }
+  }
+
   /// Innovation of z with the model's R scaled by `scale` (lambda R: the
   /// adaptive noise of association/adaptive_noise.hpp). Pure.
   /// @param scale lambda, > 0 and finite (status kOutOfRange or kNonFinite otherwise).
@@ -380,6 +413,7 @@ class Ekf {
     diag_.fused = false;
     if (count == 0 || count > kMax) return fail(Status::kOutOfRange);
     if (!(beta_none >= Scalar(0)) || !(beta_none <= Scalar(1))) return fail(Status::kOutOfRange);
+    KESTREL_TRY_OR(fail, state_status(x_, P_));  // P+ is not below P: its check cannot cover an unchecked prediction
     MeasVec z_hat;
     MeasCov S;
     MeasCov L = MeasCov::Zero();
@@ -706,8 +740,23 @@ class Ekf {
   const Diagnostics& diagnostics() const { return diag_; }
 
  private:
+  template <bool kVerify>
+  [[nodiscard]] Status predict_checked(Scalar dt) {
+    if constexpr (kBlockPredict) {
+      // F P F^T and Q per axis block.
+      Cov P = structure::transform_covariance(motion_, P_, dt);
+      structure::add_process_noise(motion_, P, dt);
+      return commit_prediction<kVerify>(motion_.propagate(x_, dt), P);
+    } else {
+      const Cov F = motion_.jacobian(x_, dt);
+      return commit_prediction<kVerify>(motion_.propagate(x_, dt),
+                                        symmetrised(F * P_ * F.transpose() + motion_.process_noise(dt)));
+    }
+  }
+
+  template <bool kVerify = true>
   [[nodiscard]] Status commit_prediction(const State& x, const Cov& P) {
-    KESTREL_TRY(state_status(x, P));
+    if constexpr (kVerify) KESTREL_TRY(state_status(x, P));
     x_ = x;
     P_ = P;
     invalidate_linearisation();

@@ -188,9 +188,19 @@ bool all_finite_mirrored(const Mat<S, n, n>& P) {
   }
 }
 
+/// Flattened where GCC optimises for speed: it otherwise may leave a
+/// static_for body out of line once the unit holds more code (a call per
+/// element of the unrolled fold). A size build (-Os, the boards) keeps
+/// GCC's own choice.
+#if defined(__OPTIMIZE_SIZE__)
+#define KESTREL_FLATTEN_FOR_SPEED
+#else
+#define KESTREL_FLATTEN_FOR_SPEED [[gnu::flatten]]
+#endif
+
 /// P += blkdiag(Q1, ..., Q1) with Q1 = axis_process_noise(dt), symmetrised.
 template <BlockDiagonalMotion M>
-void add_process_noise(const M& motion, typename M::Cov& P, typename M::Scalar dt) {
+KESTREL_FLATTEN_FOR_SPEED void add_process_noise(const M& motion, typename M::Cov& P, typename M::Scalar dt) {
   using S = typename M::Scalar;
   constexpr int d = M::kAxisDim;
   constexpr int kAxes = M::kStateDim / d;
@@ -214,7 +224,7 @@ void add_process_noise(const M& motion, typename M::Cov& P, typename M::Scalar d
 /// R2-AEKF eq. 18), symmetrised as add_symmetrised() would, upper blocks
 /// mirrored.
 template <BlockDiagonalMotion M>
-void add_mixed_process_noise(const M& motion, typename M::Cov& P, typename M::Scalar dt,
+KESTREL_FLATTEN_FOR_SPEED void add_mixed_process_noise(const M& motion, typename M::Cov& P, typename M::Scalar dt,
                              const Mat<typename M::Scalar, M::kStateDim / M::kAxisDim, M::kStateDim / M::kAxisDim>& mix) {
   using S = typename M::Scalar;
   constexpr int d = M::kAxisDim;

@@ -6,6 +6,7 @@
 // with the same models (R2-AEKF, UKF, ...) plug into the same Tracker.
 #pragma once
 
+#include <concepts>
 #include <cstddef>
 
 #include "kestrel/filters/ekf.hpp"
@@ -61,6 +62,16 @@ using CaPolarRadar = PolarRadar<CaMotion<Scalar>>;
 /// Paper 000's EKF-CA.
 template <class Scalar>
 using EkfCa = Ekf<CaMotion<Scalar>, CaPolarRadar<Scalar>>;
+
+/// EkfCa checked at every predict, as a filter without predict_unverified()
+/// is (VerifiesPredictionLater, tracking/tracker.hpp): the same estimates,
+/// for an image where code size counts more than the instructions the
+/// once-per-frame check saves (docs/performance.md, "Once per frame").
+template <class Scalar>
+struct EkfCaCheckedEachPredict : EkfCa<Scalar> {
+  using EkfCa<Scalar>::EkfCa;
+  Status predict_unverified(Scalar dt) = delete;
+};
 
 template <class Filter, std::size_t kMaxTracks, std::size_t kMaxPlots>
 using RadarTracker =
@@ -138,9 +149,11 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
 
 /// The EKF-CA radar tracker: the integer fields of p, the real ones from s
 /// (no double arithmetic: the form a fixed-point board uses).
-template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
-RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p,
-                                                                      const RadarTrackerScalars<Scalar>& s) {
+/// Filter: EkfCa<Scalar> or EkfCaCheckedEachPredict<Scalar>.
+template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots, class Filter = EkfCa<Scalar>>
+  requires std::derived_from<Filter, EkfCa<Scalar>>
+RadarTracker<Filter, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p,
+                                                               const RadarTrackerScalars<Scalar>& s) {
   CaMotion<Scalar> motion;
   motion.qj = s.qj;
   CaPolarRadar<Scalar> radar;
@@ -148,16 +161,16 @@ RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots> make_radar_tracker(const Rada
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{radar, s.max_speed_mps,
                                                                  s.init_accel_sigma_mps2};
-  return RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots>(EkfCa<Scalar>(motion, radar), init,
-                                                            radar_tracker_config<Scalar>(p, s));
+  return RadarTracker<Filter, kMaxTracks, kMaxPlots>(Filter(motion, radar), init, radar_tracker_config<Scalar>(p, s));
 }
 
 /// The EKF-CA radar tracker with the given parameters (converted at run
 /// time: exact and host-independent for fixed point too, but a board
 /// should pass constexpr RadarTrackerScalars instead).
-template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
-RadarTracker<EkfCa<Scalar>, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p) {
-  return make_radar_tracker<Scalar, kMaxTracks, kMaxPlots>(p, radar_tracker_scalars<Scalar>(p));
+template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots, class Filter = EkfCa<Scalar>>
+  requires std::derived_from<Filter, EkfCa<Scalar>>
+RadarTracker<Filter, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p) {
+  return make_radar_tracker<Scalar, kMaxTracks, kMaxPlots, Filter>(p, radar_tracker_scalars<Scalar>(p));
 }
 
 }  // namespace kestrel

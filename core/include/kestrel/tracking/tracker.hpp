@@ -76,6 +76,21 @@ concept PredictsMeasurement = requires(const F& f, const typename F::MeasVec& z)
   { f.predicted_measurement().distance(z) } -> std::same_as<PlotDistance<typename F::Scalar>>;
 };
 
+/// A filter that forms a plot's innovation from the distance its gate took
+/// (Ekf): the plot a track takes is not whitened twice.
+template <class F>
+concept InnovationFromDistance =
+    requires(const F& f, const typename F::MeasVec& z, const PlotDistance<typename F::Scalar>& d) {
+      { f.innovation(z, d) } -> std::same_as<Innovation<typename F::Scalar, F::kMeasDim>>;
+    };
+
+/// A filter that updates from the innovation it formed for the plot (Ekf):
+/// the residual of the plot a track takes is formed once.
+template <class F>
+concept UpdatesFromInnovation = requires(F& f, const Innovation<typename F::Scalar, F::kMeasDim>& in) {
+  { f.update_innovation(in) } -> std::same_as<Status>;
+};
+
 /// A filter that fuses a plot with its model's R scaled by a factor (Ekf,
 /// Imm): what a track's adaptive measurement noise needs
 /// (AdaptiveMeasurementNoise, association/adaptive_noise.hpp).
@@ -93,6 +108,16 @@ concept WeightedUpdateFilter = requires(F& f, const typename F::MeasVec (&z)[kMa
                                         const typename F::Scalar (&beta)[kMax], std::size_t n,
                                         typename F::Scalar beta_none) {
   { f.update_pda(z, beta, n, beta_none) } -> std::same_as<Status>;
+};
+
+/// A filter whose prediction can be committed unchecked and checked later
+/// (Ekf): the tracker then checks each track's P once per frame, by the
+/// update's own check or, for a track without an update, by
+/// verify_prediction() in manage().
+template <class F>
+concept VerifiesPredictionLater = requires(F& f, const F& cf, typename F::Scalar dt) {
+  { f.predict_unverified(dt) } -> std::same_as<Status>;
+  { cf.verify_prediction() } -> std::same_as<Status>;
 };
 
 /// Track-management and validation parameters.
@@ -266,12 +291,15 @@ class Tracker {
       }
     }
     /// The same with `d` = distance(track(k), j): an innovation (a filter
-    /// gated through innovation()) is used as is; a PlotDistance costs one
-    /// innovation on the filter's shared linearisation.
+    /// gated through innovation()) is used as is; a PlotDistance costs the
+    /// plot's residual on the filter's shared linearisation.
     template <class Distance>
     void assign(std::size_t k, std::size_t j, const Distance& d) {
       if constexpr (std::is_same_v<Distance, Innov>) {
         tracker_.fold_in(slot_[k], scan_, j, d, gate_, robust_, used_, hit_, drop_);
+      } else if constexpr (InnovationFromDistance<Filter> && !ChannelFilter<Filter>) {
+        const Filter& f = tracker_.table_[slot_[k]].filter;
+        tracker_.fold_in(slot_[k], scan_, j, f.innovation(scan_.z[j], d), gate_, robust_, used_, hit_, drop_);
       } else {
         assign(k, j);
       }
@@ -503,7 +531,12 @@ class Tracker {
         ++stats_.stale;
         continue;
       }
-      const Status s = tr.filter.predict(seconds(gap_us));
+      Status s;
+      if constexpr (VerifiesPredictionLater<Filter>) {
+        s = tr.filter.predict_unverified(seconds(gap_us));
+      } else {
+        s = tr.filter.predict(seconds(gap_us));
+      }
       if (s != Status::kOk) {
         ++stats_.filter_failures;
         note_failure(s);
@@ -562,7 +595,14 @@ class Tracker {
       }
     }
     const bool clipped = robust.clips(in);
-    const Status s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
+    Status s;
+    if (clipped) {
+      s = tr.filter.update(robust.shrink(scan.z[j], in));
+    } else if constexpr (UpdatesFromInnovation<Filter> && !ChannelFilter<Filter>) {
+      s = tr.filter.update_innovation(in);  // `in` is plot j's at this state (associator contract)
+    } else {
+      s = update_of(tr.filter, scan, j);
+    }
     if (s != Status::kOk) {
       ++stats_.filter_failures;
       note_failure(s);
@@ -851,6 +891,16 @@ class Tracker {
         tr.misses = static_cast<std::uint16_t>(tr.misses < UINT16_MAX ? tr.misses + 1 : tr.misses);
       }
 
+      // P is checked once per frame: by the update of a track that took a
+      // plot, here for one predicted without an update. A checked P has
+      // positive, finite variances.
+      bool checked = false;
+      Status verified = Status::kOk;
+      if constexpr (VerifiesPredictionLater<Filter>) {
+        checked = existed[i] && tr.initialised && !drop[i] && tr.t_us == scan.t_us;
+        if (checked && !hit[i]) verified = tr.filter.verify_prediction();
+      }
+
       bool remove = false;
       if (!tr.initialised) {
         remove = existed[i] && !hit[i];  // a seed lives one frame
@@ -868,9 +918,13 @@ class Tracker {
       if (drop[i]) {
         remove = true;
       } else if (tr.initialised) {
-        if (!healthy(tr.filter.P())) {
+        if (checked ? verified != Status::kOk : !healthy(tr.filter.P())) {
           remove = true;
           ++stats_.unhealthy;
+          if (verified != Status::kOk) {
+            ++stats_.filter_failures;
+            note_failure(verified);
+          }
         } else if (!(position_variance(tr.filter.P()) <= config_.max_position_variance_m2)) {
           remove = true;
         }
