@@ -228,7 +228,7 @@ void apply(std::span<const Setting> settings, P& params, const Key<P> (&keys)[N]
       std::string known;
       for (const Key<P>& k : keys) known += (known.empty() ? "" : ", ") + std::string(k.key);
       throw std::invalid_argument(s.origin + " " + s.key + "=" + shortest(s.value) + ": unknown key of the " + tracker +
-                                  " tracker (known: " + known + ")");
+                                  " tracker (known: " + known + "). The keys of each tracker: `kestrel-sim list --settings`");
     }
     check(s, *found);
     found->set(p, s.value);

@@ -169,7 +169,7 @@ void apply_one(const Setting& s, FilterOptions& o) {
   } else {
     std::string known;
     for (const SettingInfo& i : setting_table()) known += (known.empty() ? "" : ", ") + i.key;
-    refuse(s, "unknown key (known: " + known + ")");
+    refuse(s, "unknown key (known: " + known + "). The keys of each tracker: `kestrel-sim list --settings`");
   }
 }
 

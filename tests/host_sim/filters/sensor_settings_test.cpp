@@ -68,6 +68,7 @@ SCENARIO("PCL tracker keys set PclTrackerParams", "[settings][pcl]") {
       THEN("each is refused by name and nothing changes") {
         CHECK_THAT(refusal({"accel_sigma_mps2=3", "qj=5"}, p, apply),
                    Catch::Contains("--set qj=5: unknown key of the PCL tracker (known: sigma_rb_m,"));
+        CHECK_THAT(refusal({"qj=5"}, p, apply), Catch::EndsWith("`kestrel-sim list --settings`"));
         CHECK_THAT(refusal({"confirm_m=9"}, p, apply), Catch::Contains("--set confirm_m=9: out of range (whole, 1..8)"));
         CHECK_THAT(refusal({"gate_tentative=0.97"}, p, apply), Catch::Contains("out of range (0.9, 0.95, 0.99"));
         CHECK_THAT(refusal({"detection_probability=1"}, p, apply), Catch::Contains("out of range (> 0, < 1)"));

@@ -142,6 +142,7 @@ SCENARIO("An unknown key or a value out of range is refused by name and changes 
       {"max_coast_misses=-1"}, {"qj=0"},                {"sigma_range_m=-3"},     {"board_gate=2"},
       {"resync_frames=256"}, {"max_forward_jump_us=0"}, {"imm.=1"},
   };
+  CHECK_THAT(refusal({"bogus=1"}, o), Catch::EndsWith("`kestrel-sim list --settings`"));
   for (const auto& sets : bad) {
     INFO(sets.front());
     const std::string why = refusal(sets, o);
