@@ -96,13 +96,23 @@ class TrackTable {
       skip_empty();
       return *this;
     }
-    bool operator!=(End) const { return word_ < kWords; }
+    // One word (every capacity up to 64): the loop ends when its copy is
+    // empty, and there is no next word to look for.
+    bool operator!=(End) const {
+      if constexpr (kWords == 1) {
+        return bits_ != 0;
+      } else {
+        return word_ < kWords;
+      }
+    }
 
    private:
     void skip_empty() {
-      while (bits_ == 0 && word_ < kWords) {  // at most kWords steps
-        ++word_;
-        bits_ = word_ < kWords ? words_[word_] : 0;
+      if constexpr (kWords > 1) {
+        while (bits_ == 0 && word_ < kWords) {  // at most kWords steps
+          ++word_;
+          bits_ = word_ < kWords ? words_[word_] : 0;
+        }
       }
     }
     const std::uint64_t* words_;
