@@ -124,11 +124,11 @@ class ChannelGatedEkf {
   ///         kNonFinite or kNotPositiveDefinite (filter and totals unchanged).
   [[nodiscard]] Status update_channels(const MeasVec& z, ChannelMask present) {
     const ChannelGatedEkf before = *this;
-    const State x_pred = x();
-    Status s = update_gated(z, present, gate_);
+    const Linearisation lin = ekf_.linearise_channels(z, ekf_.measurement().noise(), present);
+    Status s = update_gated(lin, gate_);
     const ChannelMask dropped = dropped_by_channel_gate();
     if (s == Status::kOk && gate_.widen_for_dropped && dropped != 0) {
-      s = add_gate_truncation(x_pred, dropped, channel_count(present & kAllChannels));
+      s = add_gate_truncation(lin, dropped);
     }
     if (s == Status::kOk) s = constrain();
     if (s != Status::kOk) {
@@ -188,11 +188,37 @@ class ChannelGatedEkf {
   /// between a kept and a dropped channel are ignored).
   [[nodiscard]] Status update_gated(const MeasVec& z, ChannelMask present, const GateConfig& gate,
                                     const MeasCov& R) {
-    present &= kAllChannels;
+    return update_gated(ekf_.linearise_channels(z, R, present), gate);
+  }
+
+  const State& x() const { return ekf_.x(); }
+  const Cov& P() const { return ekf_.P(); }
+  const Motion& motion() const { return ekf_.motion(); }
+  const Measurement& measurement() const { return ekf_.measurement(); }
+  Motion& motion() { return ekf_.motion(); }
+  Measurement& measurement() { return ekf_.measurement(); }
+  /// Diagnostics of the last update attempt, per channel.
+  const Diagnostics& diagnostics() const { return diag_; }
+  /// The EKF that does the arithmetic.
+  const Base& ekf() const { return ekf_; }
+  const GateConfig& gate() const { return gate_; }
+  const StateBound<Scalar>& bound() const { return bound_; }
+  /// Channels offered to update_channels() (and note_refused()) so far, and
+  /// of them dropped: the gate's running totals.
+  std::uint32_t channels_offered() const { return offered_; }
+  std::uint32_t channels_dropped() const { return dropped_; }
+
+ private:
+  using Linearisation = typename Base::ChannelLinearisation;
+
+  /// The gate and the update on one linearisation of the predicted state:
+  /// every test and the update of the kept channels read it, none forms it
+  /// again.
+  Status update_gated(const Linearisation& lin, const GateConfig& gate) {
+    const ChannelMask present = lin.channels;
     diag_ = Diagnostics{};
     diag_.present = present;
     diag_.status = Status::kOk;
-    const Innov lin = ekf_.innovation(z, R, present);
     if (lin.status == Status::kNonFinite) return fail(lin.status);
     for (int i = 0; i < kMeasDim; ++i) {
       if (!has_channel(present, i)) continue;
@@ -220,7 +246,7 @@ class ChannelGatedEkf {
       for (int round = 0; round < kMeasDim; ++round) {
         const int m = channel_count(kept);
         if (m == 0) break;
-        const Innov set = ekf_.innovation(z, R, kept);
+        const Innov set = ekf_.innovation(lin.narrowed(kept));
         KESTREL_TRY_OR(fail, set.status);
         const Scalar threshold = ScalarTraits<Scalar>::from_double(
             chi_square_quantile(m, gate.ellipsoid_probability));
@@ -241,31 +267,13 @@ class ChannelGatedEkf {
     }
 
     if (kept == 0) return Status::kOk;  // every channel gated or absent: predict-only
-    KESTREL_TRY_OR(fail, ekf_.update(z, R, kept));
+    KESTREL_TRY_OR(fail, ekf_.update(lin.narrowed(kept)));
     diag_.fused_channels = kept;
     diag_.nis = ekf_.diagnostics().nis;
     diag_.fused = true;
     return Status::kOk;
   }
 
-  const State& x() const { return ekf_.x(); }
-  const Cov& P() const { return ekf_.P(); }
-  const Motion& motion() const { return ekf_.motion(); }
-  const Measurement& measurement() const { return ekf_.measurement(); }
-  Motion& motion() { return ekf_.motion(); }
-  Measurement& measurement() { return ekf_.measurement(); }
-  /// Diagnostics of the last update attempt, per channel.
-  const Diagnostics& diagnostics() const { return diag_; }
-  /// The EKF that does the arithmetic.
-  const Base& ekf() const { return ekf_; }
-  const GateConfig& gate() const { return gate_; }
-  const StateBound<Scalar>& bound() const { return bound_; }
-  /// Channels offered to update_channels() (and note_refused()) so far, and
-  /// of them dropped: the gate's running totals.
-  std::uint32_t channels_offered() const { return offered_; }
-  std::uint32_t channels_dropped() const { return dropped_; }
-
- private:
   /// The channels the per-channel gate dropped in the last update (its
   /// test ratio over 1), not those the ellipsoidal gate peeled.
   ChannelMask dropped_by_channel_gate() const {
@@ -290,10 +298,10 @@ class ChannelGatedEkf {
   /// 0.45 with 5 % outliers), capped at 1. The mean is left alone (a
   /// two-sided gate says nothing about the sign). The kept channels need no
   /// correction: the update conditions on their values.
-  Status add_gate_truncation(const State& x_pred, ChannelMask dropped, int offered_now) {
-    const auto H = ekf_.measurement().jacobian(x_pred);
-    const auto R = ekf_.measurement().noise();
-    const std::int64_t offered = static_cast<std::int64_t>(offered_) + offered_now;
+  Status add_gate_truncation(const Linearisation& lin, ChannelMask dropped) {
+    const auto& H = lin.H;  // at the predicted state
+    const auto& R = lin.R;
+    const std::int64_t offered = static_cast<std::int64_t>(offered_) + channel_count(lin.channels);
     const std::int64_t gated = static_cast<std::int64_t>(dropped_) + channel_count(dropped);
     Scalar good = gate_tail_ * ScalarTraits<Scalar>::from_ratio(offered, gated);
     if (good > Scalar(1)) good = Scalar(1);

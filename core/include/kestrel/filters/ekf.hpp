@@ -345,41 +345,89 @@ class Ekf {
   /// @return kOk (an empty `keep` fuses nothing and changes nothing);
   ///         kNonFinite or kNotPositiveDefinite (filter unchanged).
   [[nodiscard]] Status update(const MeasVec& z, const MeasCov& R, ChannelMask keep) {
-    diag_.fused = false;
-    diag_.fused_channels = 0;
-    keep &= kAllChannels;
-    if (keep == 0) {
-      diag_ = Diagnostics{};
-      diag_.status = Status::kOk;
-      return Status::kOk;
-    }
-    const KeptChannels k = kept_channels(z, R, keep);
-    KESTREL_TRY_OR(fail, k.status);
-    Status s;
-    if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
-      s = fold_in_sequential(k.nu, k.H, k.R);
-    } else {
-      s = fold_in_batch(k.nu, k.H, k.R, k.S);
-    }
-    if (s == Status::kOk) {
-      diag_.present = keep;
-      diag_.fused_channels = keep;
-      for (int i = 0; i < kMeasDim; ++i) {
-        if (!has_channel(keep, i)) diag_.innovation_variance(i) = Scalar(0);  // the padding's 1
-      }
-    }
-    return s;
+    return update(linearise_channels(z, R, keep));
   }
 
   /// Innovation of the channels in `keep` of z with an explicit R, the
   /// others removed as in update(z, R, keep) (nu_i 0, a unit row and column
   /// of S), so d2 is over the kept channels. Pure.
   Innov innovation(const MeasVec& z, const MeasCov& R, ChannelMask keep) const {
-    Innov out{MeasVec::Zero(), MeasCov::Identity(), Scalar(0), Status::kOk};
-    const KeptChannels k = kept_channels(z, R, keep & kAllChannels);
-    out.nu = k.nu;
-    out.S = k.S;
-    out.status = k.status;
+    return innovation(linearise_channels(z, R, keep));
+  }
+
+  /// nu, H, R and S = H P H^T + R at the current state with every channel
+  /// outside `channels` removed as update(z, R, keep) removes them; status
+  /// kOk or kNonFinite. A channel gate forms it once per plot, tests its
+  /// channels, and updates with narrowed() to the ones it keeps.
+  struct ChannelLinearisation {
+    MeasVec nu;
+    Jacobian H;
+    MeasCov R;
+    MeasCov S;
+    ChannelMask channels;
+    Status status;
+
+    /// The channels outside `keep` removed as well. Bit for bit what
+    /// linearise_channels() gives for `channels & keep`: a removed row of H
+    /// is zero, so it adds exact zeros to every kept entry of S.
+    ChannelLinearisation narrowed(ChannelMask keep) const {
+      ChannelLinearisation k = *this;
+      k.channels = channels & keep;
+      for (int i = 0; i < kMeasDim; ++i) {
+        if (has_channel(k.channels, i)) continue;
+        k.nu(i) = Scalar(0);
+        k.H.row(i).setZero();
+        k.R.row(i).setZero();
+        k.R.col(i).setZero();
+        k.R(i, i) = Scalar(1);
+        k.S.row(i).setZero();
+        k.S.col(i).setZero();
+        k.S(i, i) = Scalar(1);
+      }
+      return k;
+    }
+  };
+
+  /// The channels `keep` of z linearised at the current state with R
+  /// (channels outside `keep`, and non-finite values there, are not read).
+  ChannelLinearisation linearise_channels(const MeasVec& z, const MeasCov& R, ChannelMask keep) const {
+    ChannelLinearisation k{MeasVec::Zero(), Jacobian::Zero(), MeasCov::Zero(), MeasCov::Identity(),
+                           static_cast<ChannelMask>(keep & kAllChannels), Status::kOk};
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (has_channel(k.channels, i) && !ScalarTraits<Scalar>::is_finite(z(i))) {
+        k.status = Status::kNonFinite;
+        return k;
+      }
+    }
+    if (!all_finite(R)) {
+      k.status = Status::kNonFinite;
+      return k;
+    }
+    const Jacobian H = measurement_.jacobian(x_);
+    const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
+    for (int i = 0; i < kMeasDim; ++i) {
+      if (!has_channel(k.channels, i)) {
+        k.R(i, i) = Scalar(1);
+        continue;
+      }
+      k.nu(i) = nu(i);
+      k.H.row(i) = H.row(i);
+      for (int j = 0; j < kMeasDim; ++j) {
+        if (has_channel(k.channels, j)) k.R(i, j) = R(i, j);
+      }
+    }
+    if (!all_finite(k.H) || !all_finite(k.nu)) {
+      k.status = Status::kNonFinite;
+      return k;
+    }
+    k.S = symmetrised(k.H * P_ * k.H.transpose() + k.R);
+    if (!all_finite(k.S)) k.status = Status::kNonFinite;
+    return k;
+  }
+
+  /// The innovation of a linearisation of this state (d2 over its channels).
+  Innov innovation(const ChannelLinearisation& k) const {
+    Innov out{k.nu, k.S, Scalar(0), k.status};
     if (k.status != Status::kOk) return out;
     if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
       if (!whitened_nis(k.H, k.nu, k.R, out.d2)) out.status = Status::kNotPositiveDefinite;
@@ -392,6 +440,37 @@ class Ekf {
       out.d2 = k.nu.dot(llt.solve(k.nu));
     }
     return out;
+  }
+
+  /// Update with a linearisation of this state (linearise_channels(),
+  /// perhaps narrowed()): what update(z, R, keep) does after forming it.
+  /// One formed before the state last changed gives a wrong update, not a
+  /// refusal; the caller keeps them together (ChannelGatedEkf).
+  /// @return kOk (no channels: nothing fused, filter unchanged); kNonFinite
+  ///         or kNotPositiveDefinite (filter unchanged).
+  [[nodiscard]] Status update(const ChannelLinearisation& k) {
+    diag_.fused = false;
+    diag_.fused_channels = 0;
+    if (k.channels == 0) {
+      diag_ = Diagnostics{};
+      diag_.status = Status::kOk;
+      return Status::kOk;
+    }
+    KESTREL_TRY_OR(fail, k.status);
+    Status s;
+    if constexpr (kForm == EkfUpdateForm::kSequentialWhitened) {
+      s = fold_in_sequential(k.nu, k.H, k.R);
+    } else {
+      s = fold_in_batch(k.nu, k.H, k.R, k.S);
+    }
+    if (s == Status::kOk) {
+      diag_.present = k.channels;
+      diag_.fused_channels = k.channels;
+      for (int i = 0; i < kMeasDim; ++i) {
+        if (!has_channel(k.channels, i)) diag_.innovation_variance(i) = Scalar(0);  // the padding's 1
+      }
+    }
+    return s;
   }
 
   /// Probabilistic data association update (Bar-Shalom and Tse, 1975; Bar-Shalom,
@@ -835,49 +914,6 @@ class Ekf {
 
   void invalidate_linearisation() {
     if constexpr (kSparseUpdate) lin_.valid = false;
-  }
-
-  /// nu, H, R and S = H P H^T + R at the current state with every channel
-  /// outside `keep` removed (update(z, R, keep)); z is read on `keep` only.
-  struct KeptChannels {
-    MeasVec nu;
-    Jacobian H;
-    MeasCov R;
-    MeasCov S;
-    Status status;
-  };
-  KeptChannels kept_channels(const MeasVec& z, const MeasCov& R, ChannelMask keep) const {
-    KeptChannels k{MeasVec::Zero(), Jacobian::Zero(), MeasCov::Zero(), MeasCov::Identity(), Status::kOk};
-    for (int i = 0; i < kMeasDim; ++i) {
-      if (has_channel(keep, i) && !ScalarTraits<Scalar>::is_finite(z(i))) {
-        k.status = Status::kNonFinite;
-        return k;
-      }
-    }
-    if (!all_finite(R)) {
-      k.status = Status::kNonFinite;
-      return k;
-    }
-    const Jacobian H = measurement_.jacobian(x_);
-    const MeasVec nu = measurement_.residual(z, measurement_.predict(x_));
-    for (int i = 0; i < kMeasDim; ++i) {
-      if (!has_channel(keep, i)) {
-        k.R(i, i) = Scalar(1);
-        continue;
-      }
-      k.nu(i) = nu(i);
-      k.H.row(i) = H.row(i);
-      for (int j = 0; j < kMeasDim; ++j) {
-        if (has_channel(keep, j)) k.R(i, j) = R(i, j);
-      }
-    }
-    if (!all_finite(k.H) || !all_finite(k.nu)) {
-      k.status = Status::kNonFinite;
-      return k;
-    }
-    k.S = symmetrised(k.H * P_ * k.H.transpose() + k.R);
-    if (!all_finite(k.S)) k.status = Status::kNonFinite;
-    return k;
   }
 
   Status fail(Status s) {
