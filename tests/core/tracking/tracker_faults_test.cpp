@@ -179,16 +179,15 @@ namespace {
 /// EKF-CA whose predict can be made to report a P that is not positive
 /// definite, or whose P can be made to show a negative variance: faults a
 /// sound filter never produces, to check how the tracker answers them.
+/// Checked at every predict, as a filter without the once-per-frame check
+/// is (VerifiesPredictionLater): the tracker then also reads P's variances.
 template <class S>
-struct FaultyEkf : kestrel::EkfCa<S> {
-  using Base = kestrel::EkfCa<S>;
+struct FaultyEkf : kestrel::EkfCaCheckedEachPredict<S> {
+  using Base = kestrel::EkfCaCheckedEachPredict<S>;
   using Base::Base;
   static inline bool fail_predict = false;
   static inline bool negative_variance = false;
   Status predict(S dt) { return fail_predict ? Status::kNotPositiveDefinite : Base::predict(dt); }
-  // Checked at every predict, as a filter without the once-per-frame check
-  // is (VerifiesPredictionLater): the tracker then also reads P's variances.
-  Status predict_unverified(S dt) = delete;
   typename Base::Cov P() const {
     typename Base::Cov P = Base::P();
     if (negative_variance) P(0, 0) = S(-196.75);
