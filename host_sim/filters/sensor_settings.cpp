@@ -227,8 +227,11 @@ void apply(std::span<const Setting> settings, P& params, const Key<P> (&keys)[N]
     if (found == nullptr) {
       std::string known;
       for (const Key<P>& k : keys) known += (known.empty() ? "" : ", ") + std::string(k.key);
+      const std::string owners = trackers_taking(s.key);
       throw std::invalid_argument(s.origin + " " + s.key + "=" + shortest(s.value) + ": unknown key of the " + tracker +
-                                  " tracker (known: " + known + "). The keys of each tracker: `kestrel-sim list --settings`");
+                                  " tracker (known: " + known + ")" +
+                                  (owners.empty() ? std::string() : "; it is a key of the " + owners) +
+                                  ". The keys of each tracker: `kestrel-sim list --settings`");
     }
     check(s, *found);
     found->set(p, s.value);
@@ -304,20 +307,24 @@ bool tracker_takes(hal::FrameKind kind, const std::string& key) {
 
 }  // namespace
 
-void check_settings_kind(std::span<const Setting> settings, hal::FrameKind kind, const std::string& what) {
+std::string trackers_taking(const std::string& key) {
   constexpr hal::FrameKind kKinds[] = {hal::FrameKind::kRadar, hal::FrameKind::kPcl, hal::FrameKind::kSonar};
+  std::string owners;
+  int owner_count = 0;
+  for (const hal::FrameKind k : kKinds) {
+    if (!tracker_takes(k, key)) continue;
+    owners += std::string(owners.empty() ? "" : " and ") + tracker_name(k);
+    ++owner_count;
+  }
+  if (owner_count == 0) return owners;
+  return owners + (owner_count > 1 ? " trackers" : " tracker");
+}
+
+void check_settings_kind(std::span<const Setting> settings, hal::FrameKind kind, const std::string& what) {
   for (const Setting& s : settings) {
     if (tracker_takes(kind, s.key)) continue;
-    std::string owners;
-    int owner_count = 0;
-    for (const hal::FrameKind k : kKinds) {
-      if (!tracker_takes(k, s.key)) continue;
-      owners += std::string(owners.empty() ? "" : " and ") + tracker_name(k);
-      ++owner_count;
-    }
-    const std::string whose =
-        owners.empty() ? std::string("no tracker has it")
-                       : "it is a key of the " + owners + (owner_count > 1 ? " trackers" : " tracker");
+    const std::string owners = trackers_taking(s.key);
+    const std::string whose = owners.empty() ? std::string("no tracker has it") : "it is a key of the " + owners;
     throw std::invalid_argument(s.origin + " " + s.key + "=" + shortest(s.value) + ": '" + s.key +
                                 "' is not a key of the " + tracker_name(kind) + " tracker (" + what + "); " + whose +
                                 ". The keys of each tracker: `kestrel-sim list --settings`");

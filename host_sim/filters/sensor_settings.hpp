@@ -30,6 +30,10 @@ void apply_uw_settings(std::span<const Setting> settings, UnderwaterTrackerParam
 std::map<std::string, double> pcl_parameters(const PclTrackerParams& params);
 std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& params);
 
+/// The trackers that take `key` ("radar tracker", "PCL and underwater
+/// trackers"), or "" when none does: what an unknown-key error names.
+std::string trackers_taking(const std::string& key);
+
 /// Throws std::invalid_argument unless every setting is a key of the
 /// tracker of `kind`'s frames (the radar keys of setting_table(), the PCL
 /// or the underwater tracker's), naming the key, where it was given, the

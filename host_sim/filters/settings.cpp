@@ -10,6 +10,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "filters/sensor_settings.hpp"
+
 namespace kestrel::sim {
 
 namespace {
@@ -169,7 +171,10 @@ void apply_one(const Setting& s, FilterOptions& o) {
   } else {
     std::string known;
     for (const SettingInfo& i : setting_table()) known += (known.empty() ? "" : ", ") + i.key;
-    refuse(s, "unknown key (known: " + known + "). The keys of each tracker: `kestrel-sim list --settings`");
+    const std::string owners = trackers_taking(s.key);
+    const std::string whose = owners.empty() ? std::string() : "; it is a key of the " + owners;
+    refuse(s, "unknown key of the radar tracker (known: " + known + ")" + whose +
+                  ". The keys of each tracker: `kestrel-sim list --settings`");
   }
 }
 

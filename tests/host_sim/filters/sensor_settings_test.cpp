@@ -69,6 +69,10 @@ SCENARIO("PCL tracker keys set PclTrackerParams", "[settings][pcl]") {
         CHECK_THAT(refusal({"accel_sigma_mps2=3", "qj=5"}, p, apply),
                    Catch::Contains("--set qj=5: unknown key of the PCL tracker (known: sigma_rb_m,"));
         CHECK_THAT(refusal({"qj=5"}, p, apply), Catch::EndsWith("`kestrel-sim list --settings`"));
+        // A key of another tracker says whose it is; a key of none does not.
+        CHECK_THAT(refusal({"qj=5"}, p, apply),
+                   Catch::Contains("); it is a key of the radar tracker. The keys of each tracker"));
+        CHECK_THAT(refusal({"bogus=5"}, p, apply), !Catch::Contains("it is a key of"));
         CHECK_THAT(refusal({"confirm_m=9"}, p, apply), Catch::Contains("--set confirm_m=9: out of range (whole, 1..8)"));
         CHECK_THAT(refusal({"gate_tentative=0.97"}, p, apply), Catch::Contains("out of range (0.9, 0.95, 0.99"));
         CHECK_THAT(refusal({"detection_probability=1"}, p, apply), Catch::Contains("out of range (> 0, < 1)"));
@@ -106,6 +110,7 @@ SCENARIO("Underwater tracker keys set UnderwaterTrackerParams", "[settings][uw]"
         CHECK_THAT(refusal({"gate_k_sigma=3", "project_depth=2"}, p, apply),
                    Catch::Contains("--set project_depth=2: out of range (false or true)"));
         CHECK_THAT(refusal({"gate_k=3"}, p, apply), Catch::Contains("unknown key of the underwater tracker"));
+        CHECK_THAT(refusal({"sigma_rb_m=3"}, p, apply), Catch::Contains("; it is a key of the PCL tracker."));
         CHECK(p.gate_k_sigma == base.gate_k_sigma);
       }
     }

@@ -143,6 +143,10 @@ SCENARIO("An unknown key or a value out of range is refused by name and changes 
       {"resync_frames=256"}, {"max_forward_jump_us=0"}, {"imm.=1"},
   };
   CHECK_THAT(refusal({"bogus=1"}, o), Catch::EndsWith("`kestrel-sim list --settings`"));
+  CHECK_THAT(refusal({"bogus=1"}, o), !Catch::Contains("it is a key of"));
+  CHECK_THAT(refusal({"sigma_rb_m=2"}, o),
+             Catch::Contains("unknown key of the radar tracker (known: qj,") &&
+                 Catch::Contains("); it is a key of the PCL tracker. The keys of each tracker"));
   for (const auto& sets : bad) {
     INFO(sets.front());
     const std::string why = refusal(sets, o);
