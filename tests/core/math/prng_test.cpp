@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 
 #include "kestrel/math/prng.hpp"
@@ -154,6 +155,49 @@ TEMPLATE_TEST_CASE("Scenario: ScalarTraits' deterministic exp and log hold on bo
   CHECK(worst_log < (is_float ? 5e-7 : 1e-15));
   CHECK(T::deterministic_exp(S(0)) == S(1));
   CHECK(T::deterministic_log(S(1)) == S(0));
+}
+
+/// e^y as deterministic_exp computed it with std::ldexp for the scaling:
+/// the reference its 2^k-from-bits multiply must equal, bit for bit.
+template <class F>
+F exp_scaled_by_ldexp(F y) {
+  const F kf = y * static_cast<F>(1.44269504088896340736);
+  const int k = static_cast<int>(kf < F(0) ? kf - F(0.5) : kf + F(0.5));
+  const F fk = static_cast<F>(k);
+  const F r = (y - fk * static_cast<F>(0.693147180369123816490)) - fk * static_cast<F>(1.90821492927058770002e-10);
+  F p = F(1);
+  for (int j = 13; j >= 1; --j) p = F(1) + p * r * (F(1) / F(j));
+  return std::ldexp(p, k);
+}
+
+TEMPLATE_TEST_CASE("Scenario: deterministic exp scales by 2^k as ldexp does, bit for bit, over its whole range",
+                   "[math][prng]", double, float) {
+  using F = TestType;
+  // |y| up to 700 (double) or 80 (float), and past the ends where the result
+  // is subnormal or infinite and ldexp takes over.
+  const F limit = std::is_same_v<F, double> ? F(760) : F(110);
+  kestrel::Xoshiro256StarStar rng(11);
+  int differ = 0;
+  for (int i = 0; i < 400000; ++i) {
+    const F y = static_cast<F>((2.0 * rng.uniform01<double>() - 1.0) * double(limit));
+    const F a = kestrel::detail::deterministic_exp(y);
+    const F b = exp_scaled_by_ldexp(y);
+    if (std::memcmp(&a, &b, sizeof(F)) != 0) ++differ;
+  }
+  CHECK(differ == 0);
+  // The ends of the bit path and the first values past them, k = -1022,
+  // -1021, 1023, 1024 (double) and -126, -125, 127, 128 (float).
+  const int ends[] = {std::numeric_limits<F>::min_exponent - 1, std::numeric_limits<F>::min_exponent,
+                      std::numeric_limits<F>::max_exponent - 1, std::numeric_limits<F>::max_exponent};
+  for (const int k : ends) {
+    for (const double r : {-0.34, 0.0, 0.34}) {
+      const F y = static_cast<F>(k * 0.69314718055994530942 + r);
+      INFO("k " << k << " r " << r);
+      const F a = kestrel::detail::deterministic_exp(y);
+      const F b = exp_scaled_by_ldexp(y);
+      CHECK(std::memcmp(&a, &b, sizeof(F)) == 0);
+    }
+  }
 }
 
 TEMPLATE_TEST_CASE("Scenario: normal deviates follow N(0, 1) in the histogram and the tails", "[math][prng]", double,

@@ -18,6 +18,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 namespace kestrel {
 
@@ -85,7 +86,9 @@ F deterministic_log(F s) {
 
 /// e^y for |y| <= 700 (double) or 80 (float) from + - * / only: y = k ln 2 + r with
 /// |r| <= ln2 / 2, e^r by its Taylor series to r^13 (truncation below 5e-18),
-/// and the exact scaling by 2^k (ldexp is exact).
+/// and the exact scaling by 2^k: a multiply by 2^k built from its bits while
+/// 2^k and the result are normal (p is in [0.7, 1.5), so no rounding: what
+/// ldexp returns, without the libm call), ldexp beyond.
 template <class F>
 F deterministic_exp(F y) {
   constexpr F kInvLn2 = static_cast<F>(1.44269504088896340736);
@@ -97,11 +100,20 @@ F deterministic_exp(F y) {
   const F r = (y - fk * ln2_hi) - fk * ln2_lo;
   // Horner on 1 + r/1 (1 + r/2 (1 + ... (1 + r/13))), with 1/j as correctly
   // rounded constants (a multiply is cheaper than a divide).
-  constexpr F kInv[14] = {F(0),      F(1),      F(1) / F(2),  F(1) / F(3),  F(1) / F(4),
-                          F(1) / F(5),  F(1) / F(6),  F(1) / F(7),  F(1) / F(8),  F(1) / F(9),
-                          F(1) / F(10), F(1) / F(11), F(1) / F(12), F(1) / F(13)};
+  static constexpr F kInv[14] = {F(0),         F(1),         F(1) / F(2),  F(1) / F(3),  F(1) / F(4),
+                                 F(1) / F(5),  F(1) / F(6),  F(1) / F(7),  F(1) / F(8),  F(1) / F(9),
+                                 F(1) / F(10), F(1) / F(11), F(1) / F(12), F(1) / F(13)};
+  // Static (a local array would be built on the stack at every call) and
+  // unrolled; the same operations in the same order.
   F p = F(1);
+#pragma GCC unroll 13
   for (int j = 13; j >= 1; --j) p = F(1) + p * r * kInv[j];
+  // 2^k from its IEEE bits (biased exponent k + 1023 or k + 127).
+  if constexpr (std::is_same_v<F, double>) {
+    if (k >= -1021 && k <= 1023) return p * std::bit_cast<F>(static_cast<std::uint64_t>(k + 1023) << 52);
+  } else if constexpr (std::is_same_v<F, float>) {
+    if (k >= -125 && k <= 127) return p * std::bit_cast<F>(static_cast<std::uint32_t>(k + 127) << 23);
+  }
   return std::ldexp(p, k);
 }
 
