@@ -19,12 +19,15 @@ FilterSetup radar_filter_setup(const FilterOptions& options, const char* name, c
 
 /// kestrel-sim's radar tracker for a filter with a scaled update (EKF-CA,
 /// the IMM): the host board's capacities with the adaptive measurement
-/// noise compiled in (AdaptiveMeasurementNoise), so that the
-/// robust_noise_gain key acts; with its default of 0 it gives what the
-/// board's tracker (host::BoardRadarTracker) gives, bit for bit (golden
-/// tests). Boards build the nominal one.
+/// noise (AdaptiveMeasurementNoise) and the initiation's second hypotheses
+/// (TwoPointHypothesesInitiator) compiled in, so that the robust_noise_gain
+/// and seed_* keys act; with their defaults it gives what the board's
+/// tracker (host::BoardRadarTracker) gives, bit for bit (golden tests).
+/// Boards build the nominal one.
 template <class Filter>
-using SimRadarTracker = AdaptiveRadarTracker<Filter, host::kMaxTracks, host::kMaxPlots>;
+using SimRadarTracker =
+    Tracker<Filter, TwoPointHypothesesInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
+            host::kMaxTracks, host::kMaxPlots, NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
 
 /// kestrel-sim's EKF-CA tracker for these options (double and float are
 /// instantiated). Unless options.confirmed_gate_d2 is set, confirmed tracks

@@ -26,7 +26,8 @@ host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& option
   CaPolarRadar<Q> radar;
   radar.sigma_range_m = s.sigma_range_m;
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
-  const TwoPointInitiator<CaMotion<Q>, CaPolarRadar<Q>> init{radar, s.max_speed_mps, s.init_accel_sigma_mps2};
+  const auto init =
+      radar_initiator<host::BoardRadarTracker<EkfCa<Q>>>(radar, s.max_speed_mps, s.init_accel_sigma_mps2, p);
   TrackerConfig<Q, 2> config = radar_tracker_config<Q>(p, s);
   apply_gate_options<Q>(options, config);
   host::BoardRadarTracker<EkfCa<Q>> tracker(EkfCa<Q>(motion, radar), init, config);

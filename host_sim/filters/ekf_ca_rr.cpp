@@ -48,8 +48,8 @@ host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOpti
   radar.sigma_range_m = s.radar.sigma_range_m;
   radar.sigma_bearing_rad = s.radar.sigma_bearing_rad;
   radar.sigma_range_rate_mps = s.sigma_range_rate_mps;
-  const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadarRangeRate<Scalar>> init{radar, s.radar.max_speed_mps,
-                                                                                s.radar.init_accel_sigma_mps2};
+  const auto init = radar_initiator<host::BoardRadarTracker<EkfCaRr<Scalar>>>(radar, s.radar.max_speed_mps,
+                                                                               s.radar.init_accel_sigma_mps2, p.radar);
   TrackerConfig<Scalar, 3> config = radar_range_rate_tracker_config<Scalar>(p, s);
   apply_gate_options<Scalar>(options, config);
   host::BoardRadarTracker<EkfCaRr<Scalar>> tracker(EkfCaRr<Scalar>(motion, radar), init, config);

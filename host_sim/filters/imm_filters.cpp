@@ -124,8 +124,8 @@ SimRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options)
   const RadarImmParams p = imm_params(options);
   const RadarTrackerParams tp = radar_tracker_params(options);  // initiation and management of "ekf-ca"
   const RadarImm<Scalar> prototype = make_radar_imm<Scalar>(p);
-  const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
-      prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2)};
+  const auto init = radar_initiator<SimRadarTracker<RadarImm<Scalar>>>(
+      prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2), tp);
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(tp);
   apply_gate_options<Scalar>(options, config);
   SimRadarTracker<RadarImm<Scalar>> tracker(prototype, init, config);

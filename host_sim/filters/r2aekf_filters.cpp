@@ -52,8 +52,8 @@ host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, co
   using Scalar = typename Filter::Scalar;
   using T = ScalarTraits<Scalar>;
   const RadarTrackerParams p = radar_tracker_params(options);
-  const TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{
-      prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2)};
+  const auto init = radar_initiator<host::BoardRadarTracker<Filter>>(
+      prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2), p);
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
   host::BoardRadarTracker<Filter> tracker(prototype, init, config);

@@ -35,8 +35,8 @@ StreamRunResult run_family(StreamInput stream, const FilterOptions& options, std
   Radar radar;
   radar.sigma_range_m = T::from_double(p.sigma_range_m);
   radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
-  const TwoPointInitiator<Motion, Radar> init{radar, T::from_double(p.max_speed_mps),
-                                              T::from_double(p.init_accel_sigma_mps2)};
+  const auto init =
+      radar_initiator<Tracker>(radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2), p);
   TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
   // The tracker holds the whole track table: keep it off the stack.

@@ -68,6 +68,33 @@ void apply_measurement_noise(Tracker& tracker, const RadarTrackerParams& p) {
   throw std::invalid_argument(what);
 }
 
+/// The two-point initiator of `Tracker` (its InitiatorT) on `radar`, with
+/// p's seed rules (seed_extra_frames, seed_from_pairs) when it is a
+/// TwoPointHypothesesInitiator. Throws std::invalid_argument naming the keys
+/// when p sets a rule a TwoPointInitiator does not have (all but ekf-ca,
+/// ekf-ca-f32, imm, imm-f32 and `multi`).
+template <class Tracker, class Radar>
+typename Tracker::InitiatorT radar_initiator(const Radar& radar, typename Tracker::Scalar max_speed_mps,
+                                             typename Tracker::Scalar init_accel_sigma_mps2,
+                                             const RadarTrackerParams& p) {
+  using Initiator = typename Tracker::InitiatorT;
+  Initiator init{};
+  init.measurement = radar;
+  init.max_speed_mps = max_speed_mps;
+  init.accel_sigma_mps2 = init_accel_sigma_mps2;
+  if constexpr (requires { Initiator::kKeepsHypotheses; }) {
+    init.seed_extra_frames = p.seed_extra_frames;
+    init.seed_from_pairs = p.seed_from_pairs;
+  } else if (p.seed_extra_frames != 0 || p.seed_from_pairs) {
+    throw std::invalid_argument("seed_extra_frames " + std::to_string(p.seed_extra_frames) + ", seed_from_pairs " +
+                                std::to_string(p.seed_from_pairs ? 1 : 0) +
+                                ": refused: this filter's tracker keeps one hypothesis per start (ekf-ca, ekf-ca-f32, "
+                                "imm, imm-f32 and multi keep more; docs/robustness.md, \"A second hypothesis at the "
+                                "start\")");
+  }
+  return init;
+}
+
 /// Every radar tracker key with its value in p, for summary.json.
 void add_radar_parameters(const RadarTrackerParams& p, std::map<std::string, double>& parameters);
 

@@ -62,10 +62,11 @@ struct MultiRunConfig {
   std::uint64_t budget_ns = 1'000'000;
 };
 
-/// The tracker of a multi-target run: EKF-CA with two-point initiation and
-/// M-of-N, kMultiMaxTracks tracks, the wire's 32 plots, the associator given.
+/// The tracker of a multi-target run: EKF-CA with two-point initiation (its
+/// second hypotheses by the seed_* keys) and M-of-N, kMultiMaxTracks tracks,
+/// the wire's 32 plots, the associator given.
 template <class Filter, template <class, std::size_t, std::size_t> class Associator>
-using MultiTargetTracker = Tracker<Filter, TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>>,
+using MultiTargetTracker = Tracker<Filter, TwoPointHypothesesInitiator<CaMotion<double>, CaPolarRadar<double>>,
                                    kMultiMaxTracks, hal::kMaxRadarPlots, Associator>;
 
 /// The filter every track starts from, by the config's settings.
@@ -91,8 +92,7 @@ std::unique_ptr<MultiTargetTracker<Filter, Associator>> make_multi_target_tracke
   using T = MultiTargetTracker<Filter, Associator>;
   const RadarTrackerParams p = radar_tracker_params(config.options);
   const Filter prototype = multi_target_filter<Filter>(config);
-  const TwoPointInitiator<CaMotion<double>, CaPolarRadar<double>> init{prototype.measurement(), p.max_speed_mps,
-                                                                      p.init_accel_sigma_mps2};
+  const auto init = radar_initiator<T>(prototype.measurement(), p.max_speed_mps, p.init_accel_sigma_mps2, p);
   typename T::Config tc = radar_tracker_config<double>(p);
   FilterOptions gate = config.options;
   gate.board_gate = true;

@@ -119,6 +119,38 @@ SCENARIO("The adaptive noise keys reach the trackers built with it and are refus
   }
 }
 
+SCENARIO("The seed keys reach the trackers built with the second hypotheses and are refused by the others",
+         "[settings]") {
+  const FilterOptions o = with({"seed_extra_frames=1", "seed_from_pairs=true"});
+  GIVEN("EKF-CA and the IMM, which kestrel-sim builds with TwoPointHypothesesInitiator") {
+    THEN("their initiators take the rules; by default the rules are off") {
+      const auto ekf = make_ekf_ca_tracker<float>(o);
+      CHECK(ekf.initiator().seed_extra_frames == 1);
+      CHECK(ekf.initiator().seed_from_pairs);
+      const auto imm = make_imm_tracker<double>(o);
+      CHECK(imm.initiator().seed_extra_frames == 1);
+      CHECK(imm.initiator().seed_from_pairs);
+      const auto plain = make_ekf_ca_tracker<double>(FilterOptions{});
+      CHECK(plain.initiator().seed_extra_frames == 0);
+      CHECK(!plain.initiator().seed_from_pairs);
+    }
+  }
+  GIVEN("EKF-CA-RR, built with TwoPointInitiator") {
+    THEN("either rule is refused naming the keys; their defaults are not") {
+      for (const char* key : {"seed_extra_frames=1", "seed_from_pairs=1"}) {
+        try {
+          (void)make_ekf_ca_rr_tracker<double>(with({key}));
+          FAIL("no refusal of " << key);
+        } catch (const std::invalid_argument& e) {
+          CHECK(std::string(e.what()).find("seed_extra_frames") != std::string::npos);
+          CHECK(std::string(e.what()).find("one hypothesis per start") != std::string::npos);
+        }
+      }
+      CHECK_NOTHROW(make_ekf_ca_rr_tracker<double>(with({"seed_extra_frames=0", "seed_from_pairs=0"})));
+    }
+  }
+}
+
 SCENARIO("Gate and IMM keys set the options their own flags set", "[settings]") {
   const FilterOptions o = with({"gate_d2=13.8", "board_gate=true", "robust_gate_factor=25", "imm.p_stay=0.9"});
   REQUIRE(o.confirmed_gate_d2.has_value());

@@ -49,6 +49,15 @@ struct RadarTrackerParams {
   double robust_noise_max_scale = 16.0;
   std::uint8_t confirm_m = 2;                  ///< M of M-of-N (the seed and the pairing plot).
   std::uint8_t confirm_n = 3;                  ///< N of M-of-N.
+  /// TwoPointHypothesesInitiator's rules: a seed pairs in this many frames
+  /// after the next one too, and (seed_from_pairs) a pairing plot starts a
+  /// seed of its own. Only a tracker built with that initiator honours them
+  /// (kestrel-sim's ekf-ca and imm); make_radar_tracker() builds a
+  /// TwoPointInitiator, every board's, and does not read them. Off by
+  /// default: with 2-of-3 confirmation every extra pair in clutter is a
+  /// false track (docs/robustness.md, "A second hypothesis at the start").
+  std::uint8_t seed_extra_frames = 0;
+  bool seed_from_pairs = false;
   std::uint16_t max_coast_misses = 5;          ///< Consecutive misses before deletion.
   std::int64_t max_predict_us = 10'000'000;    ///< Delete, not extrapolate, a track older than this (TrackerConfig).
   std::int64_t max_forward_jump_us = 600'000'000;  ///< Refuse a frame this far ahead (TrackerConfig).

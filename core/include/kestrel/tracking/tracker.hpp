@@ -167,7 +167,7 @@ struct StepStats {
   std::uint16_t seeded = 0;        ///< Started a new seed.
   std::uint16_t confirmed = 0;     ///< Tracks confirmed in this frame.
   std::uint16_t deleted = 0;       ///< Tracks deleted in this frame.
-  std::uint16_t dropped = 0;       ///< Unused measurements with no free slot to seed.
+  std::uint16_t dropped = 0;       ///< Unused measurements (or seeds to keep) with no free slot.
   std::uint16_t refused = 0;       ///< Unused measurements the initiator refused to start from (kOutOfRange).
   std::uint16_t filter_failures = 0;  ///< Predict/update refused by a filter.
   std::uint16_t stale = 0;      ///< Deleted: predict gap over max_predict_us (also in `deleted`).
@@ -197,6 +197,7 @@ class Tracker {
   using Report = TrackReport<Filter>;
   using Table = TrackTable<TrackT, kMaxTracks>;
   using Config = TrackerConfig<Scalar, kMeasDim>;
+  using InitiatorT = Initiator;
   using AssociatorT = Associator<Scalar, kMaxTracks, kMaxMeasurements>;
   using AssociatorParams = typename AssociatorT::Params;
   using ManagerT = Manager<Scalar>;
@@ -409,7 +410,7 @@ class Tracker {
               hit, drop);
     associate(scan, TrackStatus::kTentative, gate_tentative_, RobustGate<Scalar, kMeasDim>{},
               gate_probability_tentative_, used, hit, drop);
-    initiate_from_seeds(scan, used, hit);
+    initiate_from_seeds(scan, existed, used, hit);
     seed_new(scan, used, hit);
     manage(scan, existed, hit, drop);
     build_reports(scan.t_us);
@@ -725,46 +726,115 @@ class Tracker {
     ++stats_.associated;
   }
 
-  /// A seed pairs with the unused measurement of lowest pairing cost.
-  void initiate_from_seeds(const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+  /// An initiator that keeps more than one hypothesis of a start
+  /// (TwoPointHypothesesInitiator); the code for it is compiled only then.
+  static constexpr bool kKeepsHypotheses = requires { requires Initiator::kKeepsHypotheses; };
+
+  /// A seed pairs with the unused measurement of lowest pairing cost and
+  /// becomes a track. With a TwoPointHypothesesInitiator, seeds from the
+  /// last frame pair first (over the shorter interval their pair gives the
+  /// better velocity), then the older ones it keeps.
+  void initiate_from_seeds(const Scan& scan, const bool (&existed)[kMaxTracks], bool (&used)[kMaxMeasurements],
+                           bool (&hit)[kMaxTracks]) {
     if constexpr (!Initiator::kSinglePoint) {
       for (const std::size_t i : table_.active_slots()) {
         if (table_[i].initialised) continue;
-        TrackT& tr = table_[i];
-        const std::int64_t gap_us = elapsed_us(scan.t_us, tr.t_us);
-        if (gap_us > config_.max_predict_us) continue;  // a seed lives one frame; manage() drops it
-        const Scalar dt = seconds(gap_us);
-        std::size_t best = kMaxMeasurements;
-        Scalar best_cost{};
-        for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
-          if (j >= scan.count) break;
-          if (used[j]) continue;
-          const auto cost = initiator_.pair_cost(tr.seed, scan.z[j], dt);
-          if (!cost.ok()) continue;
-          if (best == kMaxMeasurements || cost.value() < best_cost) {
-            best = j;
-            best_cost = cost.value();
-          }
+        if constexpr (kKeepsHypotheses) {
+          if (!existed[i] || table_[i].age != 0) continue;  // not a seed of this frame's making; older ones next
         }
-        if (best == kMaxMeasurements) continue;
-        typename Filter::State x;
-        typename Filter::Cov P;
-        if (initiator_.initiate(tr.seed, scan.z[best], dt, x, P) != Status::kOk ||
-            tr.filter.reset(x, P) != Status::kOk) {
-          ++stats_.filter_failures;
-          continue;
+        pair_seed(i, scan, used, hit);
+      }
+      if constexpr (kKeepsHypotheses) {
+        if (initiator_.seed_extra_frames == 0) return;
+        for (const std::size_t i : table_.active_slots()) {
+          if (table_[i].initialised || !existed[i] || table_[i].age == 0) continue;
+          pair_seed(i, scan, used, hit);
         }
-        used[best] = true;
-        hit[i] = true;
-        tr.initialised = true;
-        tr.t_us = scan.t_us;
-        tr.associated = true;
-        tr.measurement_index = static_cast<std::int16_t>(best);
-        // The pairing plot is evidence too: scored against the state it started.
-        if constexpr (ManagerT::kScoresInnovations) manager_.hit(tr, tr.filter.innovation(scan.z[best]));
-        ++stats_.initiated;
+      }
+    } else {
+      (void)existed;
+    }
+  }
+
+  /// Seed i pairs with the unused measurement of lowest pairing cost. With
+  /// a TwoPointHypothesesInitiator a seed that meets no unused measurement
+  /// at all is deleted at once: every plot went to a track, so it was most
+  /// likely an outlier of a tracked target, and waiting would only let it
+  /// pair with that target's next missed plot.
+  void pair_seed(std::size_t i, const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+    TrackT& tr = table_[i];
+    const std::int64_t gap_us = elapsed_us(scan.t_us, tr.t_us);
+    if (gap_us > config_.max_predict_us) return;  // manage() drops it
+    const Scalar dt = seconds(gap_us);
+    std::size_t best = kMaxMeasurements;
+    Scalar best_cost{};
+    bool met_unused = false;
+    for (std::size_t j = 0; j < kMaxMeasurements; ++j) {
+      if (j >= scan.count) break;
+      if (used[j]) continue;
+      met_unused = true;
+      const auto cost = initiator_.pair_cost(tr.seed, scan.z[j], dt);
+      if (!cost.ok()) continue;
+      if (best == kMaxMeasurements || cost.value() < best_cost) {
+        best = j;
+        best_cost = cost.value();
       }
     }
+    if (best == kMaxMeasurements) {
+      if constexpr (kKeepsHypotheses) {
+        if (!met_unused) {
+          table_.release(i);
+          ++stats_.deleted;
+        }
+      } else {
+        (void)met_unused;
+      }
+      return;
+    }
+    typename Filter::State x;
+    typename Filter::Cov P;
+    if (initiator_.initiate(tr.seed, scan.z[best], dt, x, P) != Status::kOk ||
+        tr.filter.reset(x, P) != Status::kOk) {
+      ++stats_.filter_failures;
+      return;
+    }
+    if constexpr (kKeepsHypotheses) {
+      // The pair may hold an outlier: the seed pairs again while it has
+      // frames left, and the pairing plot starts a seed of its own.
+      if (tr.age < initiator_.seed_extra_frames) add_seed(tr.seed, tr.t_us, static_cast<std::uint16_t>(tr.age + 1), -1, hit);
+      if (initiator_.seed_from_pairs) add_seed(scan.z[best], scan.t_us, 0, static_cast<std::int16_t>(best), hit);
+    }
+    used[best] = true;
+    hit[i] = true;
+    tr.initialised = true;
+    tr.t_us = scan.t_us;
+    tr.associated = true;
+    tr.measurement_index = static_cast<std::int16_t>(best);
+    // The pairing plot is evidence too: scored against the state it started.
+    if constexpr (ManagerT::kScoresInnovations) manager_.hit(tr, tr.filter.innovation(scan.z[best]));
+    ++stats_.initiated;
+  }
+
+  /// A seed holding z (taken at t_us; measurement j of this frame, or -1
+  /// for a kept copy) in a free slot. `age` 1 makes a kept copy one frame
+  /// older, as manage() does not age a slot in the frame it is taken.
+  void add_seed(const MeasVec& z, std::int64_t t_us, std::uint16_t age, std::int16_t j, bool (&hit)[kMaxTracks]) {
+    const std::size_t slot = table_.allocate(prototype_);
+    if (slot == kMaxTracks) {
+      ++stats_.dropped;
+      return;
+    }
+    TrackT& tr = table_[slot];
+    tr.seed = z;
+    tr.t_us = t_us;
+    tr.age = age;
+    tr.initialised = false;
+    tr.associated = j >= 0;
+    tr.measurement_index = j;
+    manager_.start(tr);
+    if constexpr (MeasurementNoiseT::kAdapts) measurement_noise_.start(slot);
+    hit[slot] = j >= 0;
+    ++stats_.seeded;
   }
 
   struct NoFilter {};
@@ -869,7 +939,9 @@ class Tracker {
   }
 
   /// The frame's bookkeeping (history, age, hits, misses), then the
-  /// manager's verdict on every initialised track; a seed lives one frame.
+  /// manager's verdict on every initialised track; a seed lives one frame
+  /// (a TwoPointHypothesesInitiator's seed_extra_frames more, within
+  /// max_predict_us).
   /// Deleted besides, whatever the manager says: tracks marked to drop this
   /// frame (stale or unhealthy), any track with a variance that is not
   /// positive and finite, and any track whose position variance exceeds
@@ -904,6 +976,10 @@ class Tracker {
       bool remove = false;
       if (!tr.initialised) {
         remove = existed[i] && !hit[i];  // a seed lives one frame
+        if constexpr (kKeepsHypotheses) {
+          remove = remove && (tr.age > initiator_.seed_extra_frames ||
+                              elapsed_us(scan.t_us, tr.t_us) > config_.max_predict_us);
+        }
       } else {
         const TrackVerdict v = manager_.judge(tr, hit[i]);
         if (v == TrackVerdict::kConfirm && tr.status == TrackStatus::kTentative) {

@@ -82,4 +82,19 @@ struct TwoPointInitiator {
   }
 };
 
+/// A TwoPointInitiator whose tracker keeps more than one hypothesis of a
+/// start, for a pair that holds an outlier: a seed keeps pairing, once per
+/// frame, for seed_extra_frames frames after the next one, even after it
+/// has paired, while each frame offers it a plot no track took; and, with
+/// seed_from_pairs, the plot that completes a pair starts a seed of its
+/// own. Each pair is a track of its own. A separate type because the
+/// tracker compiles these rules only for it: an image built with
+/// TwoPointInitiator carries none of their code.
+template <class Motion, class Measurement>
+struct TwoPointHypothesesInitiator : TwoPointInitiator<Motion, Measurement> {
+  static constexpr bool kKeepsHypotheses = true;
+  std::uint8_t seed_extra_frames = 0;  ///< 0: a seed pairs in the next frame only.
+  bool seed_from_pairs = false;        ///< The plot that completes a pair starts a seed too.
+};
+
 }  // namespace kestrel
