@@ -11,6 +11,8 @@
 //    a loss, two are a split or a duplicate).
 //  - Track ids on target: distinct ids that were ever within L; a drop and
 //    restart, or a split, makes it more than one.
+//  - False tracks: distinct ids of confirmed tracks never within L in the
+//    scored frames (a track started from clutter or outliers).
 #pragma once
 
 #include <cstddef>
@@ -20,9 +22,11 @@
 
 namespace kestrel::sim {
 
-/// One scored frame: the confirmed tracks within L of the truth.
+/// One scored frame: the confirmed tracks within L of the truth, and the
+/// others.
 struct OnTargetTracks {
-  std::vector<std::uint32_t> ids;  ///< Their track ids.
+  std::vector<std::uint32_t> ids;      ///< Ids of the confirmed tracks within L.
+  std::vector<std::uint32_t> off_ids;  ///< Ids of the confirmed tracks beyond L.
 };
 
 struct TrackContinuity {
@@ -30,6 +34,7 @@ struct TrackContinuity {
   std::size_t held_frames = 0;                ///< With exactly one confirmed track on target.
   double held_fraction = 0.0;                 ///< held / after confirmation; NaN if none after.
   std::size_t track_ids_on_target = 0;        ///< Distinct ids ever within L.
+  std::size_t false_tracks = 0;               ///< Distinct confirmed ids never within L.
 };
 
 TrackContinuity compute_track_continuity(std::span<const OnTargetTracks> steps);

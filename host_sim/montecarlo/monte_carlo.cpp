@@ -60,7 +60,7 @@ MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& fi
 MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t budget_ns) {
   MonteCarloSummary s;
   s.runs = runs.size();
-  std::vector<double> rmse, peak, nees, nis, loss, recovery, switches, held, episodes, ids;
+  std::vector<double> rmse, peak, nees, nis, loss, recovery, switches, held, episodes, ids, false_tracks;
   s.worst_held_fraction = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::uint64_t> all_steps;
   for (const RunRecord& r : runs) {
@@ -77,6 +77,7 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
     }
     episodes.push_back(static_cast<double>(r.metrics.episodes.size()));
     ids.push_back(static_cast<double>(r.continuity.track_ids_on_target));
+    false_tracks.push_back(static_cast<double>(r.continuity.false_tracks));
     s.max_track_ids_on_target = std::max(s.max_track_ids_on_target, r.continuity.track_ids_on_target);
     // docs/metrics.md: recovery is averaged over the runs that had an episode.
     if (!r.metrics.episodes.empty()) recovery.push_back(r.metrics.recovery_s);
@@ -97,6 +98,7 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
   s.held_fraction = mean_ci95(held);
   s.loss_episodes = mean_ci95(episodes);
   s.track_ids_on_target = mean_ci95(ids);
+  s.false_tracks = mean_ci95(false_tracks);
   s.timing = summarise_step_times(all_steps, budget_ns);
   return s;
 }

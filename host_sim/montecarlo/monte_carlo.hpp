@@ -66,6 +66,7 @@ struct MonteCarloSummary {
   MeanCi loss_episodes;               ///< Lost episodes per run.
   MeanCi track_ids_on_target;         ///< Distinct confirmed track ids within L per run.
   std::size_t max_track_ids_on_target = 0;
+  MeanCi false_tracks;                ///< Confirmed tracks never within L per run.
   StepTiming timing;                  ///< Over every step of every run.
 };
 

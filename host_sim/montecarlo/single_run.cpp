@@ -23,7 +23,11 @@ std::vector<OnTargetTracks> on_target_tracks(const RunDetail& d) {
     OnTargetTracks on;
     for (const host::TrackRow& row : d.stream.frames[s.k].tracks) {
       if (!row.confirmed) continue;
-      if (std::hypot(row.x_m - s.truth.x_m, row.y_m - s.truth.y_m) <= d.loss_threshold_m) on.ids.push_back(row.track_id);
+      if (std::hypot(row.x_m - s.truth.x_m, row.y_m - s.truth.y_m) <= d.loss_threshold_m) {
+        on.ids.push_back(row.track_id);
+      } else {
+        on.off_ids.push_back(row.track_id);
+      }
     }
     out.push_back(std::move(on));
   }

@@ -60,10 +60,11 @@ void print_continuity(std::FILE* out, const TableRow& r) {
   if (!std::isfinite(s.held_fraction.mean)) return;
   std::fprintf(out,
                "%-8s %-11s        continuity: one confirmed track on target in %s %% of frames after confirmation "
-               "(worst run %.2f %%); loss episodes per run %s; track ids on target per run %s (max %zu)\n",
+               "(worst run %.2f %%); loss episodes per run %s; track ids on target per run %s (max %zu); "
+               "false confirmed tracks per run %s\n",
                "", "", percent(s.held_fraction).c_str(), 100.0 * s.worst_held_fraction,
                interval(s.loss_episodes, "%.3f").c_str(), interval(s.track_ids_on_target, "%.3f").c_str(),
-               s.max_track_ids_on_target);
+               s.max_track_ids_on_target, interval(s.false_tracks, "%.3f").c_str());
 }
 
 void print_timing(std::FILE* out, const std::string& what, const StepTiming& t) {

@@ -50,6 +50,7 @@ nlohmann::json summary_entry(const EntryContext& c, const MonteCarloSummary& s) 
       {"loss_episodes", interval(s.loss_episodes)},
       {"track_ids_on_target", interval(s.track_ids_on_target)},
       {"max_track_ids_on_target", s.max_track_ids_on_target},
+      {"false_confirmed_tracks", interval(s.false_tracks)},
       {"step_ns",
        {{"min", s.timing.min_ns},
         {"median", s.timing.median_ns},

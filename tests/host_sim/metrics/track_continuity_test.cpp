@@ -12,7 +12,7 @@ using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
 
 SCENARIO("Track continuity counts held frames from the first confirmation", "[host_sim][metrics][continuity]") {
   GIVEN("two frames without a track, then one track held for three frames") {
-    const std::vector<OnTargetTracks> steps{{{}}, {{}}, {{7}}, {{7}}, {{7}}};
+    const std::vector<OnTargetTracks> steps{{{}, {}}, {{}, {}}, {{7}, {}}, {{7}, {}}, {{7}, {}}};
     const TrackContinuity c = compute_track_continuity(steps);
     THEN("all three frames after confirmation are held by one id") {
       CHECK(c.frames_after_confirmation == 3);
@@ -22,7 +22,7 @@ SCENARIO("Track continuity counts held frames from the first confirmation", "[ho
     }
   }
   GIVEN("a track that is lost for a frame and restarted under a new id") {
-    const std::vector<OnTargetTracks> steps{{{3}}, {{3}}, {{}}, {{4}}};
+    const std::vector<OnTargetTracks> steps{{{3}, {}}, {{3}, {}}, {{}, {}}, {{4}, {}}};
     const TrackContinuity c = compute_track_continuity(steps);
     THEN("the lost frame is not held and two ids were on the target") {
       CHECK(c.frames_after_confirmation == 4);
@@ -32,7 +32,7 @@ SCENARIO("Track continuity counts held frames from the first confirmation", "[ho
     }
   }
   GIVEN("a split: two confirmed tracks on the target in one frame") {
-    const std::vector<OnTargetTracks> steps{{{1}}, {{1, 2}}, {{1}}, {{1}}};
+    const std::vector<OnTargetTracks> steps{{{1}, {}}, {{1, 2}, {}}, {{1}, {}}, {{1}, {}}};
     const TrackContinuity c = compute_track_continuity(steps);
     THEN("that frame is not held") {
       CHECK(c.held_frames == 3);
@@ -40,8 +40,16 @@ SCENARIO("Track continuity counts held frames from the first confirmation", "[ho
       CHECK(c.track_ids_on_target == 2);
     }
   }
+  GIVEN("confirmed tracks beyond L: one that later reaches the target, one that never does") {
+    const std::vector<OnTargetTracks> steps{{{}, {5, 6}}, {{1}, {5, 6}}, {{5}, {6}}, {{5}, {}}};
+    const TrackContinuity c = compute_track_continuity(steps);
+    THEN("only the one never on the target is false, counted once") {
+      CHECK(c.false_tracks == 1);
+      CHECK(c.track_ids_on_target == 2);
+    }
+  }
   GIVEN("no track ever on the target") {
-    const std::vector<OnTargetTracks> steps{{{}}, {{}}};
+    const std::vector<OnTargetTracks> steps{{{}, {}}, {{}, {}}};
     const TrackContinuity c = compute_track_continuity(steps);
     THEN("nothing is counted and the fraction is NaN") {
       CHECK(c.frames_after_confirmation == 0);
