@@ -88,7 +88,8 @@ const RadarKey kRadarKeys[] = {
   {"seed_extra_frames", 0.0, false, 7.0, true,
    [](const RadarTrackerParams& p) { return static_cast<double>(p.seed_extra_frames); },
    [](RadarTrackerParams& p, double v) { p.seed_extra_frames = static_cast<std::uint8_t>(v); },
-   "two-point initiation: frames after the next one in which a seed still pairs, even after it has paired (0: the next frame only)"},
+   "two-point initiation: frames after the next one in which a seed still pairs, even after it has paired "
+   "(0: the next frame only)"},
   {"seed_from_pairs", 0.0, false, 1.0, true,
    [](const RadarTrackerParams& p) { return p.seed_from_pairs ? 1.0 : 0.0; },
    [](RadarTrackerParams& p, double v) { p.seed_from_pairs = v == 1.0; },

@@ -16,8 +16,8 @@ using kestrel::Status;
 using kestrel::TrackStatus;
 
 template <class S>
-using Plain = kestrel::Tracker<kestrel::EkfCa<S>, kestrel::TwoPointInitiator<kestrel::CaMotion<S>, kestrel::CaPolarRadar<S>>,
-                               8, 8>;
+using Plain = kestrel::Tracker<kestrel::EkfCa<S>,
+                               kestrel::TwoPointInitiator<kestrel::CaMotion<S>, kestrel::CaPolarRadar<S>>, 8, 8>;
 template <class S>
 using Hypotheses =
     kestrel::Tracker<kestrel::EkfCa<S>,
@@ -70,7 +70,9 @@ double nearest_confirmed_m(const Tracker& tracker, int k) {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& r : tracker.reports()) {
     if (r.status != TrackStatus::kConfirmed) continue;
-    best = std::min(best, std::hypot(static_cast<double>(r.x(0)) - truth_x(k), static_cast<double>(r.x(3)) - truth_y(k)));
+    const double dx = static_cast<double>(r.x(0)) - truth_x(k);
+    const double dy = static_cast<double>(r.x(3)) - truth_y(k);
+    best = std::min(best, std::hypot(dx, dy));
   }
   return best;
 }
@@ -165,9 +167,9 @@ TEMPLATE_TEST_CASE("a TwoPointHypothesesInitiator with its rules off is TwoPoint
 }
 
 TEST_CASE("a seed to keep with no free slot is counted as dropped", "[tracker][initiation]") {
-  using T = kestrel::Tracker<kestrel::EkfCa<double>,
-                             kestrel::TwoPointHypothesesInitiator<kestrel::CaMotion<double>, kestrel::CaPolarRadar<double>>,
-                             1, 8>;
+  using T = kestrel::Tracker<
+      kestrel::EkfCa<double>,
+      kestrel::TwoPointHypothesesInitiator<kestrel::CaMotion<double>, kestrel::CaPolarRadar<double>>, 1, 8>;
   auto tracker = make<T>();
   REQUIRE(tracker.step(frame<T>(0)) == Status::kOk);
   REQUIRE(tracker.step(frame<T>(1)) == Status::kOk);

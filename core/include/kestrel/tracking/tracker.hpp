@@ -740,7 +740,9 @@ class Tracker {
       for (const std::size_t i : table_.active_slots()) {
         if (table_[i].initialised) continue;
         if constexpr (kKeepsHypotheses) {
-          if (!existed[i] || table_[i].age != 0) continue;  // not a seed of this frame's making; older ones next
+          // Made in this frame (a kept copy, a pairing plot's seed), or older
+          // than the last frame (the second pass).
+          if (!existed[i] || table_[i].age != 0) continue;
         }
         pair_seed(i, scan, used, hit);
       }
@@ -801,7 +803,9 @@ class Tracker {
     if constexpr (kKeepsHypotheses) {
       // The pair may hold an outlier: the seed pairs again while it has
       // frames left, and the pairing plot starts a seed of its own.
-      if (tr.age < initiator_.seed_extra_frames) add_seed(tr.seed, tr.t_us, static_cast<std::uint16_t>(tr.age + 1), -1, hit);
+      if (tr.age < initiator_.seed_extra_frames) {
+        add_seed(tr.seed, tr.t_us, static_cast<std::uint16_t>(tr.age + 1), -1, hit);
+      }
       if (initiator_.seed_from_pairs) add_seed(scan.z[best], scan.t_us, 0, static_cast<std::int16_t>(best), hit);
     }
     used[best] = true;
