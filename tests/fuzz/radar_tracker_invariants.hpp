@@ -6,7 +6,9 @@
 //
 // The bytes are read as a sequence of wire radar frames (hal::Frame), each
 // converted by the board adapter (hal::to_scan) and stepped, in double,
-// float and Q31.32. Per frame, one op byte: bits 0-1 choose the time step
+// float and Q31.32, by the board's tracker and by one whose initiator keeps
+// second hypotheses (TwoPointHypothesesInitiator, two extra seed frames,
+// pairing plots seeding: the seeds it copies and releases mid-frame). Per frame, one op byte: bits 0-1 choose the time step
 // (fuzz_bytes.hpp: the next 0.5 s scan; a signed step of up to +-32 s; any
 // int64 time; a gap of up to 49 days), bits 2-6 the plot count (0-31, over
 // the scan capacity of 16 on purpose). Per plot, one byte: bit 0 set reads a raw
@@ -68,14 +70,23 @@ inline bool next_radar_frame(ByteReader& r, std::int64_t& t_us, int frame_index,
   return true;
 }
 
-/// Runs the bytes through one scalar's tracker; nullptr or what broke.
+/// The radar tracker of make_radar_tracker() with the hypotheses initiator.
 template <class Scalar>
-const char* check_radar_tracker_invariants_for(std::span<const std::uint8_t> in) {
-  using Tracker = RadarTracker<EkfCa<Scalar>, 8, 16>;
-  RadarTrackerParams p;
-  p.qj = 16.0;
+using HypothesesRadarTracker =
+    Tracker<EkfCa<Scalar>, TwoPointHypothesesInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>>, 8, 16>;
+
+template <class Scalar>
+HypothesesRadarTracker<Scalar> make_hypotheses_radar_tracker(const RadarTrackerParams& p) {
+  const auto board = make_radar_tracker<Scalar, 8, 16>(p);
+  TwoPointHypothesesInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{board.initiator(), 2, true};
+  return HypothesesRadarTracker<Scalar>(board.prototype_filter(), init, board.config());
+}
+
+/// Runs the bytes through one tracker; nullptr or what broke.
+template <class Tracker>
+const char* check_radar_tracker_invariants_of(std::span<const std::uint8_t> in, const Tracker& start) {
   // Heap, not stack: the tracker and its snapshot are a few tens of KiB.
-  auto tracker = std::make_unique<Tracker>(make_radar_tracker<Scalar, 8, 16>(p));
+  auto tracker = std::make_unique<Tracker>(start);
   auto before = std::make_unique<Tracker>(*tracker);
   auto frame = std::make_unique<hal::Frame>();
   typename Tracker::Scan scan;
@@ -89,6 +100,19 @@ const char* check_radar_tracker_invariants_for(std::span<const std::uint8_t> in)
     if (const char* why = step_invariant_broken(*tracker, *before, s)) return why;
   }
   return nullptr;
+}
+
+/// Runs the bytes through one scalar's trackers; nullptr or what broke.
+template <class Scalar>
+const char* check_radar_tracker_invariants_for(std::span<const std::uint8_t> in) {
+  RadarTrackerParams p;
+  p.qj = 16.0;
+  {
+    auto board = std::make_unique<RadarTracker<EkfCa<Scalar>, 8, 16>>(make_radar_tracker<Scalar, 8, 16>(p));
+    if (const char* why = check_radar_tracker_invariants_of(in, *board)) return why;
+  }
+  auto hypotheses = std::make_unique<HypothesesRadarTracker<Scalar>>(make_hypotheses_radar_tracker<Scalar>(p));
+  return check_radar_tracker_invariants_of(in, *hypotheses);
 }
 
 inline const char* check_radar_tracker_invariants(std::span<const std::uint8_t> in) {
