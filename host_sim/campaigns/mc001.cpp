@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -20,10 +19,7 @@
 #include "kestrel/models/motion/constant_velocity_2d.hpp"
 #include "metrics/monte_carlo_stats.hpp"
 #include "pipeline/worker_pool.hpp"
-
-#ifndef KESTREL_SIM_PLOT_SCRIPT
-#error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
-#endif
+#include "plots/plot_runner.hpp"
 
 namespace kestrel::sim::mc001 {
 
@@ -449,23 +445,6 @@ void print_summary(const Summary& s) {
   }
 }
 
-bool plot(const std::filesystem::path& dir) {
-  const auto quote = [](const std::string& v) {
-    std::string q = "'";
-    for (const char ch : v) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-  };
-  const char* py = std::getenv("KESTREL_PYTHON");
-  const std::string python = py != nullptr && *py != '\0' ? py : "/usr/bin/python3";
-  const std::filesystem::path script =
-      std::filesystem::path(KESTREL_SIM_PLOT_SCRIPT).parent_path() / "mc001_plots.py";
-  const std::string cmd = quote(python) + " " + quote(script.string()) + " --dir " + quote(dir.string());
-  std::fflush(stdout);
-  const int rc = std::system(cmd.c_str());
-  if (rc == 0) return true;
-  std::fprintf(stderr, "warning: MC-001 plotting failed (status %d); results are unaffected. Command: %s\n", rc,
-               cmd.c_str());
-  return false;
-}
+bool plot(const std::filesystem::path& dir) { return run_named_plot_script("mc001_plots.py", {"--dir", dir.string()}); }
 
 }  // namespace kestrel::sim::mc001

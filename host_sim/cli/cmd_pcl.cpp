@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "filters/sensor_settings.hpp"
 #include "montecarlo/pcl_monte_carlo.hpp"
+#include "report/output_files.hpp"
 #include "report/pcl_files.hpp"
 
 namespace kestrel::sim::cli {

@@ -32,6 +32,7 @@
 #include "montecarlo/uw_run.hpp"
 #include "plots/plot_runner.hpp"
 #include "report/pcl_files.hpp"
+#include "report/output_files.hpp"
 #include "report/results_table.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_json.hpp"
@@ -140,12 +141,6 @@ nlohmann::json truth_match_json(const TruthMatch& m) {
   return {{"matched", m.matched}, {"without_truth", m.without_truth}, {"without_time", m.without_time}};
 }
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
 OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
                            const PclTrackerParams& params, std::uint64_t budget_ns,
                            const std::filesystem::path& dir, const ReplayTruth* truth) {
@@ -188,14 +183,14 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
     r.entry["target_tracks"] = m.target_tracks;
     r.entry["confirmed_tracks"] = m.confirmed_tracks;
     r.scored = truth_match_text(score->match) + "\n  association accuracy " +
-               fmt("%.4f", m.association_accuracy) + " (" + std::to_string(m.assoc_correct) + " of " +
-               std::to_string(m.assoc_frames) + " frames), coverage after confirmation " + fmt("%.4f", m.coverage) +
+               format_number("%.4f", m.association_accuracy) + " (" + std::to_string(m.assoc_correct) + " of " +
+               std::to_string(m.assoc_frames) + " frames), coverage after confirmation " + format_number("%.4f", m.coverage) +
                " (" + std::to_string(m.covered_frames) + " of " + std::to_string(m.coverage_frames) + ")\n  " +
                "confirmed tracks " + std::to_string(m.confirmed_tracks) + ": on the target " +
                std::to_string(m.target_tracks) + ", false " + std::to_string(m.false_tracks) + "; Rb RMSE " +
-               fmt("%.3f", m.rb_rmse_m) + " m, dRb RMSE " + fmt("%.3f", m.drb_rmse_mps) +
+               format_number("%.3f", m.rb_rmse_m) + " m, dRb RMSE " + format_number("%.3f", m.drb_rmse_mps) +
                " m/s over " + std::to_string(m.rmse_frames) + " frames; first confirmation at " +
-               fmt("%g", m.time_to_confirm_s) + " s";
+               format_number("%g", m.time_to_confirm_s) + " s";
   }
   r.entry["sensor"] = pcl_scenario_json(sc);
   r.entry["tracker"] = pcl_tracker_json(params, policies);
@@ -243,11 +238,11 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
     r.entry["truth_frames"] = truth_match_json(score.match);
     r.entry["scored_frames"] = m.scored_frames;
     r.entry["init_frame"] = m.init_frame;
-    r.scored = truth_match_text(score.match) + "\n  3D RMSE " + fmt("%.3f", m.rmse_3d_m) + " m, horizontal " +
-               fmt("%.3f", m.rmse_h_m) + " m, depth " + fmt("%.3f", m.rmse_depth_m) + " m, 3D peak " +
-               fmt("%.3f", m.peak_3d_m) + " m, position NEES " + fmt("%.3f", m.nees) + " (3 dof) over " +
+    r.scored = truth_match_text(score.match) + "\n  3D RMSE " + format_number("%.3f", m.rmse_3d_m) + " m, horizontal " +
+               format_number("%.3f", m.rmse_h_m) + " m, depth " + format_number("%.3f", m.rmse_depth_m) + " m, 3D peak " +
+               format_number("%.3f", m.peak_3d_m) + " m, position NEES " + format_number("%.3f", m.nees) + " (3 dof) over " +
                std::to_string(m.scored_frames) + " frames after the fix\n  sound-speed error mean " +
-               fmt("%.3f", m.c_err_mean_mps) + " m/s, std " + fmt("%.3f", m.c_err_std_mps) + " m/s; arrivals " +
+               format_number("%.3f", m.c_err_mean_mps) + " m/s, std " + format_number("%.3f", m.c_err_std_mps) + " m/s; arrivals " +
                std::to_string(m.arrivals) + ": true outliers " + std::to_string(m.outliers) + ", of which gated " +
                std::to_string(m.outliers_gated) + "; good arrivals gated " + std::to_string(m.good_gated);
   }
@@ -387,7 +382,7 @@ void check_truth_overlap(const ReplayTruth& truth, const std::vector<Measurement
       lo = std::isfinite(lo) ? std::min(lo, v) : v;
       hi = std::isfinite(hi) ? std::max(hi, v) : v;
     }
-    return std::isfinite(lo) ? fmt("%.6f", lo) + " .. " + fmt("%.6f", hi) + " s" : std::string("none");
+    return std::isfinite(lo) ? format_number("%.6f", lo) + " .. " + format_number("%.6f", hi) + " s" : std::string("none");
   };
   throw std::invalid_argument("--truth " + truth_path + ": no frame of " + source +
                               " is at a time of the truth (to the microsecond): frames " + span(frame_times) +

@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "filters/sensor_settings.hpp"
 #include "metrics/uw_metrics.hpp"
+#include "report/output_files.hpp"
 #include "report/uw_files.hpp"
 
 namespace kestrel::sim::cli {
@@ -95,7 +96,7 @@ int run_single(const UwOptions& o) {
   write_uw_run_csvs(dir, mc.first_run, mc.first_output);
   nlohmann::json summary = uw_summary_json(scenario, params, config, s);
   summary["parameters"] = uw_parameters(params);  // every key, as the run used it
-  write_uw_json(dir / "uw_summary.json", summary);
+  write_json_file(dir / "uw_summary.json", summary);
   const bool plotted =
       o.plots && plot_uw(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
 
@@ -163,7 +164,7 @@ int run_study(const UwOptions& o) {
       write_uw_steps_csv(sub / "uw_steps.csv", s);
       write_uw_run_csvs(sub, mc.first_run, mc.first_output);
       const nlohmann::json j = uw_summary_json(scenario, params, config, s);
-      write_uw_json(sub / "uw_summary.json", j);
+      write_json_file(sub / "uw_summary.json", j);
       if (o.plots && g.per_channel && g.k == 3.0) {
         plot_uw(sub, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
       }
@@ -186,7 +187,7 @@ int run_study(const UwOptions& o) {
       << md;
     if (!f) throw std::runtime_error("cannot write uw_study.md");
   }
-  write_uw_json(dir / "uw_study.json", {{"schema", "kestrel-sim-uw-study/1"}, {"runs", config.runs}, {"rows", rows}});
+  write_json_file(dir / "uw_study.json", {{"schema", "kestrel-sim-uw-study/1"}, {"runs", config.runs}, {"rows", rows}});
   std::printf("wrote %s/{uw_study.md, uw_study.json} and one folder per row\n", dir.c_str());
   return 0;
 }

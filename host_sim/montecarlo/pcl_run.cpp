@@ -15,18 +15,13 @@
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/hal/pcl_adapter.hpp"
 #include "kestrel/host/board.hpp"
+#include "stream/stream_writer.hpp"
 
 namespace kestrel::sim {
 
 std::vector<std::uint8_t> encode_pcl_stream(const PclScenarioRun& run) {
   std::vector<std::uint8_t> bytes;
-  std::array<std::uint8_t, hal::wire::kMaxEncodedFrameBytes> buffer{};
-  for (const PclFrameRecord& f : run.frames) {
-    std::size_t written = 0;
-    const Status s = hal::encode(f.wire, buffer, written);
-    if (s != Status::kOk) throw std::runtime_error(std::string("cannot encode a PCL frame: ") + to_string(s));
-    bytes.insert(bytes.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written));
-  }
+  for (const PclFrameRecord& f : run.frames) append_encoded(f.wire, bytes);
   return bytes;
 }
 

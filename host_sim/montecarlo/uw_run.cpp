@@ -12,6 +12,7 @@
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/hal/sonar_adapter.hpp"
 #include "kestrel/host/board.hpp"
+#include "stream/stream_writer.hpp"
 
 namespace kestrel::sim {
 
@@ -25,13 +26,7 @@ using UwTracker = UnderwaterTracker<double, kUwBeacons>;
 
 std::vector<std::uint8_t> encode_uw_stream(const UwScenarioRun& run) {
   std::vector<std::uint8_t> bytes;
-  std::array<std::uint8_t, hal::wire::kMaxEncodedFrameBytes> buffer{};
-  for (const UwFrameRecord& f : run.frames) {
-    std::size_t written = 0;
-    const Status s = hal::encode(f.wire, buffer, written);
-    if (s != Status::kOk) throw std::runtime_error(std::string("cannot encode a sonar frame: ") + to_string(s));
-    bytes.insert(bytes.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written));
-  }
+  for (const UwFrameRecord& f : run.frames) append_encoded(f.wire, bytes);
   return bytes;
 }
 

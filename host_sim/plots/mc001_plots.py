@@ -9,7 +9,7 @@
       DIR/mc001_time.png  time per step per filter (paper 001 fig. 7)
 
 Reads DIR/mc001_mse.csv and DIR/mc001_timing.csv only (csv module). If
-matplotlib is missing it prints a warning and exits 0: the figures are in the
+matplotlib is missing it prints a warning and exits 1: the numbers are in the
 CSV files.
 """
 import argparse
@@ -17,16 +17,7 @@ import csv
 import os
 import sys
 
-
-def load_matplotlib():
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        return plt
-    except ImportError as e:  # pragma: no cover - depends on the host
-        print(f"warning: matplotlib not available ({e}); skipping plots", file=sys.stderr)
-        return None
+from plot_common import load_matplotlib
 
 
 def read_rows(path):
@@ -39,8 +30,6 @@ def main():
     ap.add_argument("--dir", required=True)
     args = ap.parse_args()
     plt = load_matplotlib()
-    if plt is None:
-        return 0
     rows = read_rows(os.path.join(args.dir, "mc001_mse.csv"))
     filters = []
     for r in rows:

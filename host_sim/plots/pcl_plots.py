@@ -16,7 +16,7 @@ against time:
   - the truth (green, thin), and any false confirmed track (orange).
 The target track is the confirmed track on the target (50 m, 5 m/s) for most
 of its life, as in the metrics. Only the csv module is used; without
-matplotlib it prints a warning and exits 0.
+matplotlib it prints a warning and exits 1.
 """
 import argparse
 import csv
@@ -24,16 +24,7 @@ import math
 import os
 import sys
 
-
-def load_matplotlib():
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        return plt
-    except ImportError as e:  # pragma: no cover - depends on the host
-        print(f"warning: matplotlib not available ({e}); skipping PCL plot", file=sys.stderr)
-        return None
+from plot_common import load_matplotlib
 
 
 def num(cell):
@@ -52,8 +43,6 @@ def main():
     ap.add_argument("--out", default=None)
     a = ap.parse_args()
     plt = load_matplotlib()
-    if plt is None:
-        return 0
     cands = rows(os.path.join(a.dir, "pcl_candidates.csv"))
     tracks = rows(os.path.join(a.dir, "pcl_tracks.csv"))
     truth = rows(os.path.join(a.dir, "pcl_truth.csv"))

@@ -18,8 +18,8 @@
       ran (e.g. GNN and the oracle)
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
-pandas). If matplotlib is missing it prints a warning and exits 0: plots are
-a convenience, the figures are in the CSV and JSON files.
+pandas). If matplotlib is missing it prints a warning and exits 1: plots are
+a convenience, the numbers are in the CSV and JSON files.
 """
 import argparse
 import csv
@@ -28,16 +28,7 @@ import math
 import sys
 import textwrap
 
-
-def load_matplotlib():
-    try:
-        import matplotlib
-        matplotlib.use("Agg")  # files only, no display needed
-        import matplotlib.pyplot as plt
-        return plt
-    except ImportError as e:  # pragma: no cover - depends on the host
-        print(f"warning: matplotlib not available ({e}); skipping plots", file=sys.stderr)
-        return None
+from plot_common import load_matplotlib
 
 
 def number(cell):
@@ -265,8 +256,6 @@ def main():
     args = p.parse_args()
 
     plt = load_matplotlib()
-    if plt is None:
-        return 0
     if args.mode == "run":
         plot_run(plt, args)
     elif args.mode == "modes":

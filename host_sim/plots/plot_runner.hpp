@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Runs the plot script (plots/plot_results.py) with /usr/bin/python3, the
-// interpreter that has matplotlib on this project's hosts; KESTREL_PYTHON
-// and KESTREL_PLOT_SCRIPT override the interpreter and the script. Plotting
+// Runs the plot scripts (plots/*.py) in one Python process per command
+// (plots/plot_server.py) with /usr/bin/python3, the interpreter that has
+// matplotlib on this project's hosts; KESTREL_PYTHON overrides the
+// interpreter and KESTREL_PLOT_SCRIPT the script plot_results.py. Plotting
 // is best effort: a failure prints a warning and never fails the command.
 #pragma once
 
@@ -11,8 +12,13 @@
 
 namespace kestrel::sim {
 
-/// Run the script with `args`. @return true if it exited with status 0;
-/// otherwise a warning has been printed to stderr.
+/// Run plots/<script_name> (a script beside plot_results.py, e.g.
+/// "pcl_plots.py") with `args`. @return true if it exited with status 0;
+/// otherwise a warning naming the command has been printed to stderr.
+bool run_named_plot_script(const std::string& script_name, const std::vector<std::string>& args);
+
+/// Run plot_results.py (or the script KESTREL_PLOT_SCRIPT names) with
+/// `args`, as run_named_plot_script does.
 bool run_plot_script(const std::vector<std::string>& args);
 
 /// Plots of one run: <prefix>_xy.png (truth, plots, track) and

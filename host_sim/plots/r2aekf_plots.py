@@ -13,7 +13,7 @@ writes
   DIR/fig5_metrics.png       bars: RMSE, peak, NEES, track loss, recovery with
                              95 % intervals over the Monte Carlo runs (fig. 5)
 Only the csv and json modules are used to read; without matplotlib it warns
-and exits 0 (every figure's numbers are in the CSV and JSON files).
+and exits 1 (every figure's numbers are in the CSV and JSON files).
 """
 import argparse
 import csv
@@ -22,18 +22,9 @@ import math
 import os
 import sys
 
+from plot_common import load_matplotlib
+
 COLOURS = {"r2aekf": "tab:red", "r2aekf-paper": "tab:orange"}
-
-
-def load_matplotlib():
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        return plt
-    except ImportError as e:  # pragma: no cover - depends on the host
-        print(f"warning: matplotlib not available ({e}); skipping plots", file=sys.stderr)
-        return None
 
 
 def number(cell):
@@ -151,8 +142,6 @@ def main():
     with open(os.path.join(args.dir, "study.json")) as f:
         study = json.load(f)
     plt = load_matplotlib()
-    if plt is None:
-        return 0
     scenarios = study.get("options", {}).get("scenarios", [])
     filters = study.get("filters", [])
     fig2(plt, args.dir, scenarios, filters)

@@ -18,7 +18,7 @@ and draws:
                         for run 0, and the RMS error per frame over the runs,
                         paper fig. 3.
 Only the csv module is used; without matplotlib it prints a warning and
-exits 0.
+exits 1.
 """
 import argparse
 import csv
@@ -26,16 +26,7 @@ import math
 import os
 import sys
 
-
-def load_matplotlib():
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-        return plt
-    except ImportError as e:  # pragma: no cover - depends on the host
-        print(f"warning: matplotlib not available ({e}); skipping UW plots", file=sys.stderr)
-        return None
+from plot_common import load_matplotlib
 
 
 def num(cell):
@@ -57,8 +48,6 @@ def main():
     ap.add_argument("--title", default="UW run 0")
     a = ap.parse_args()
     plt = load_matplotlib()
-    if plt is None:
-        return 0
     truth = rows(os.path.join(a.dir, "uw_truth.csv"))
     track = [r for r in rows(os.path.join(a.dir, "uw_track.csv")) if r["reported"] == "1"]
     arrivals = rows(os.path.join(a.dir, "uw_arrivals.csv"))

@@ -1,38 +1,29 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report/main_report.hpp"
 
-#include <cmath>
-#include <cstdio>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "kestrel/version.hpp"
+#include "report/output_files.hpp"
 
 namespace kestrel::sim {
 
 namespace {
 
-std::string fmt(const char* f, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-// "mean [lo, hi]" of a MeanCi, "-" without data.
-std::string interval(const MeanCi& m, const char* f) {
-  if (!std::isfinite(m.mean)) return "-";
-  return fmt(f, m.mean) + " [" + fmt(f, m.ci95_low) + ", " + fmt(f, m.ci95_high) + "]";
-}
-
-// The same from a summary JSON's {"mean", "ci95_low", "ci95_high"}.
+// interval_text of a summary JSON's {"mean", "ci95_low", "ci95_high"}
+// (null where a value was not finite).
 std::string interval(const nlohmann::json& j, const char* key, const char* f) {
-  if (!j.contains(key) || !j[key].is_object() || !j[key]["mean"].is_number()) return "-";
-  const nlohmann::json& m = j[key];
-  return fmt(f, m["mean"].get<double>()) + " [" + fmt(f, m["ci95_low"].get<double>()) + ", " +
-         fmt(f, m["ci95_high"].get<double>()) + "]";
+  if (!j.contains(key) || !j[key].is_object()) return "-";
+  const auto number = [&](const char* name) {
+    const nlohmann::json& v = j[key].value(name, nlohmann::json());
+    return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+  };
+  return interval_text({number("mean"), number("ci95_low"), number("ci95_high"), 0}, f);
 }
 
 nlohmann::json read_json(const std::filesystem::path& path) {
@@ -65,11 +56,11 @@ void radar_section(std::ostream& out, const MainReport& r) {
          "step us median / p99 |\n|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& row : r.radar) {
     const MonteCarloSummary& s = row.row.summary;
-    out << "| " << row.row.scenario << " | " << row.label << " | " << s.runs << " | " << interval(s.rmse_m, "%.1f")
-        << " | " << interval(s.peak_m, "%.0f") << " | " << interval(s.nees_pos, "%.1f") << " | "
-        << interval(s.nis, "%.2f") << " | " << s.runs_without_loss << "/" << s.runs << " | "
-        << fmt("%.1f", static_cast<double>(s.timing.median_ns) * 1e-3) << " / "
-        << fmt("%.1f", static_cast<double>(s.timing.p99_ns) * 1e-3) << " |\n";
+    out << "| " << row.row.scenario << " | " << row.label << " | " << s.runs << " | " << interval_text(s.rmse_m, "%.1f")
+        << " | " << interval_text(s.peak_m, "%.0f") << " | " << interval_text(s.nees_pos, "%.1f") << " | "
+        << interval_text(s.nis, "%.2f") << " | " << s.runs_without_loss << "/" << s.runs << " | "
+        << format_number("%.1f", static_cast<double>(s.timing.median_ns) * 1e-3) << " / "
+        << format_number("%.1f", static_cast<double>(s.timing.p99_ns) * 1e-3) << " |\n";
   }
   out << "\nPer-scenario files: `<scenario>/<filter>_{tracks,steps,runs}.csv`, `summary.json`.\n\n";
   if (!r.radar_summary_figure.empty()) out << "![summary](" << r.radar_summary_figure << ")\n\n";
@@ -129,7 +120,7 @@ void write_main_report(const std::filesystem::path& path, const std::filesystem:
                        const MainReport& r) {
   std::ostringstream out;
   out << "# Kestrel: the four papers' systems, one run of each\n\n"
-      << "`kestrel-sim suite` (kestrel-sim " << KESTREL_VERSION_STRING << "), " << fmt("%.1f", r.wall_s)
+      << "`kestrel-sim suite` (kestrel-sim " << KESTREL_VERSION_STRING << "), " << format_number("%.1f", r.wall_s)
       << " s. Every run drives the tracker core through the HAL's wire frames, as a board does.\n\n";
   if (!r.radar.empty()) out << "- [Paper 000: radar, S1 and S2](#paper-000-adaptive-ekf-on-manoeuvring-radar-targets-s1-s2)\n";
   if (!r.mc001_dir.empty()) {

@@ -2,46 +2,18 @@
 #include "report/pcl_files.hpp"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <stdexcept>
 
 #include "csv/sensor_truth_csv.hpp"
 #include "kestrel/models/measurement/bistatic_range_rate.hpp"
-
-#ifndef KESTREL_SIM_PLOT_SCRIPT
-#error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
-#endif
+#include "plots/plot_runner.hpp"
+#include "report/output_files.hpp"
 
 namespace kestrel::sim {
 
 namespace {
-
-std::ofstream open_out(const std::filesystem::path& path) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot create '" + path.string() + "'");
-  out.precision(10);
-  return out;
-}
-
-/// A number, or an empty cell for NaN.
-std::string cell(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-nlohmann::json interval(const MeanCi& m) {
-  return {{"mean", number_or_null(m.mean)},
-          {"ci95_low", number_or_null(m.ci95_low)},
-          {"ci95_high", number_or_null(m.ci95_high)},
-          {"n", m.n}};
-}
 
 const char* gate_name(GateProbability g) {
   switch (g) {
@@ -63,12 +35,13 @@ void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<Pcl
          "detections,cut_by_adapter,cut_by_sensor,frames_over_capacity,frames_refused,vetoed_starts,"
          "dropped_starts,max_tracks_in_table\n";
   for (const PclRunMetrics& r : runs) {
-    out << r.seed << ',' << cell(r.association_accuracy) << ',' << r.assoc_correct << ',' << r.assoc_frames << ','
-        << cell(r.coverage) << ',' << r.covered_frames << ',' << r.coverage_frames << ',' << r.confirmed_tracks << ','
-        << r.target_tracks << ',' << r.false_tracks << ',' << cell(r.rb_rmse_m) << ',' << cell(r.drb_rmse_mps) << ','
-        << r.rmse_frames << ',' << cell(r.time_to_confirm_s) << ',' << r.detections << ',' << r.cut_by_adapter << ','
-        << r.cut_by_sensor << ',' << r.frames_over_capacity << ',' << r.frames_refused << ',' << r.refused_starts
-        << ',' << r.dropped_starts << ',' << r.max_tracks_in_table << '\n';
+    out << r.seed << ',' << csv_cell(r.association_accuracy) << ',' << r.assoc_correct << ',' << r.assoc_frames << ','
+        << csv_cell(r.coverage) << ',' << r.covered_frames << ',' << r.coverage_frames << ',' << r.confirmed_tracks
+        << ',' << r.target_tracks << ',' << r.false_tracks << ',' << csv_cell(r.rb_rmse_m) << ','
+        << csv_cell(r.drb_rmse_mps) << ',' << r.rmse_frames << ',' << csv_cell(r.time_to_confirm_s) << ','
+        << r.detections << ',' << r.cut_by_adapter << ',' << r.cut_by_sensor << ',' << r.frames_over_capacity << ','
+        << r.frames_refused << ',' << r.refused_starts << ',' << r.dropped_starts << ',' << r.max_tracks_in_table
+        << '\n';
   }
 }
 
@@ -121,10 +94,10 @@ void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<P
       }
       f << time_s[k] << ',' << r.id << ',' << (r.associated ? 1 : 0) << ',' << r.frame_index << ',' << r.rb_m << ','
         << r.drb_mps << ',' << doppler_from_range_rate(r.drb_mps, lambda_m) << ',' << r.p_rr << ',' << r.p_rd << ','
-        << r.p_dd << ',' << cell(r.nis) << ',' << r.test_ratio << ',' << r.age << ',' << r.hits << ',' << r.misses
-        << ',' << cell(r.has_prediction ? r.pred_rb_m : nan) << ','
-        << cell(r.has_prediction ? r.pred_drb_mps : nan) << ','
-        << cell(r.has_prediction ? doppler_from_range_rate(r.pred_drb_mps, lambda_m) : nan) << ',' << on << '\n';
+        << r.p_dd << ',' << csv_cell(r.nis) << ',' << r.test_ratio << ',' << r.age << ',' << r.hits << ',' << r.misses
+        << ',' << csv_cell(r.has_prediction ? r.pred_rb_m : nan) << ','
+        << csv_cell(r.has_prediction ? r.pred_drb_mps : nan) << ','
+        << csv_cell(r.has_prediction ? doppler_from_range_rate(r.pred_drb_mps, lambda_m) : nan) << ',' << on << '\n';
     }
   }
   if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
@@ -171,17 +144,17 @@ nlohmann::json pcl_summary_json(const PclScenarioConfig& sc, const PclTrackerPar
       {"runs", s.runs},
       {"base_seed", c.base_seed},
       {"tolerance", {{"rb_m", c.tolerance.rb_m}, {"drb_mps", c.tolerance.drb_mps}}},
-      {"association_accuracy", interval(s.association_accuracy)},
+      {"association_accuracy", interval_json(s.association_accuracy)},
       {"association_accuracy_pooled", number_or_null(s.pooled_accuracy)},
-      {"coverage_after_confirmation", interval(s.coverage)},
+      {"coverage_after_confirmation", interval_json(s.coverage)},
       {"coverage_pooled", number_or_null(s.pooled_coverage)},
-      {"false_confirmed_tracks_per_run", interval(s.false_tracks)},
+      {"false_confirmed_tracks_per_run", interval_json(s.false_tracks)},
       {"runs_with_false_track", s.runs_with_false_track},
       {"total_false_tracks", s.total_false_tracks},
       {"runs_never_confirmed", s.runs_never_confirmed},
-      {"rb_rmse_m", interval(s.rb_rmse_m)},
-      {"drb_rmse_mps", interval(s.drb_rmse_mps)},
-      {"time_to_first_confirmation_s", interval(s.time_to_confirm_s)},
+      {"rb_rmse_m", interval_json(s.rb_rmse_m)},
+      {"drb_rmse_mps", interval_json(s.drb_rmse_mps)},
+      {"time_to_first_confirmation_s", interval_json(s.time_to_confirm_s)},
       {"detections", s.detections},
       {"detections_cut_by_adapter", s.cut_by_adapter},
       {"detections_cut_by_sensor", s.cut_by_sensor},
@@ -203,31 +176,8 @@ nlohmann::json pcl_summary_json(const PclScenarioConfig& sc, const PclTrackerPar
   };
 }
 
-void write_json_file(const std::filesystem::path& path, const nlohmann::json& j) {
-  std::ofstream out = open_out(path);
-  out << j.dump(2) << '\n';
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-}
-
 bool plot_pcl(const std::filesystem::path& dir, const std::string& title) {
-  // plots/pcl_plots.py sits beside plot_results.py; the interpreter is the
-  // one plot_runner uses (KESTREL_PYTHON overrides it).
-  const auto quote = [](const std::string& v) {
-    std::string q = "'";
-    for (const char ch : v) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-  };
-  const char* py = std::getenv("KESTREL_PYTHON");
-  const std::string python = py != nullptr && *py != '\0' ? py : "/usr/bin/python3";
-  const std::filesystem::path script = std::filesystem::path(KESTREL_SIM_PLOT_SCRIPT).parent_path() / "pcl_plots.py";
-  const std::string cmd = quote(python) + " " + quote(script.string()) + " --dir " + quote(dir.string()) +
-                          " --title " + quote(title);
-  std::fflush(stdout);
-  const int rc = std::system(cmd.c_str());
-  if (rc == 0) return true;
-  std::fprintf(stderr, "warning: PCL plotting failed (status %d); results are unaffected. Command: %s\n", rc,
-               cmd.c_str());
-  return false;
+  return run_named_plot_script("pcl_plots.py", {"--dir", dir.string(), "--title", title});
 }
 
 }  // namespace kestrel::sim

@@ -45,8 +45,6 @@ nlohmann::json pcl_tracker_json(const PclTrackerParams& params, const TrackerPol
 nlohmann::json pcl_summary_json(const PclScenarioConfig& scenario, const PclTrackerParams& params,
                                 const PclMonteCarloConfig& config, const PclSummary& summary);
 
-void write_json_file(const std::filesystem::path& path, const nlohmann::json& j);
-
 /// Run plots/pcl_plots.py over the run-0 CSVs of `dir` (best effort, like
 /// the other plots: a failure prints a warning). @return true on success.
 bool plot_pcl(const std::filesystem::path& dir, const std::string& title);

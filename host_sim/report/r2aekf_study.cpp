@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -24,13 +23,12 @@
 #include "kestrel/filters/r2aekf.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 #include "montecarlo/monte_carlo.hpp"
+#include "plots/plot_runner.hpp"
+#include "report/output_files.hpp"
+#include "report/summary_json.hpp"
 #include "scenarios/registry.hpp"
 #include "stream/stream_writer.hpp"
 #include "timing/step_timing.hpp"
-
-#ifndef KESTREL_SIM_PLOT_SCRIPT
-#error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
-#endif
 
 namespace kestrel::sim {
 
@@ -58,37 +56,7 @@ const PaperTable2* paper_row(const std::string& scenario) {
   return nullptr;
 }
 
-std::string fmt(const char* f, double v) {
-  if (!std::isfinite(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
-
-std::string ci(const MeanCi& m, const char* f) {
-  if (!std::isfinite(m.mean)) return "-";
-  return fmt(f, m.mean) + " [" + fmt(f, m.ci95_low) + ", " + fmt(f, m.ci95_high) + "]";
-}
-
-nlohmann::json to_json(const MeanCi& m) {
-  const auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  return {{"mean", num(m.mean)}, {"ci95_low", num(m.ci95_low)}, {"ci95_high", num(m.ci95_high)}, {"n", m.n}};
-}
-
-nlohmann::json to_json(const MonteCarloSummary& s) {
-  return {{"runs", s.runs},
-          {"rmse_m", to_json(s.rmse_m)},
-          {"peak_m", to_json(s.peak_m)},
-          {"nees_pos", to_json(s.nees_pos)},
-          {"nis", to_json(s.nis)},
-          {"track_loss_s", to_json(s.track_loss_s)},
-          {"recovery_s", to_json(s.recovery_s)},
-          {"runs_without_loss", s.runs_without_loss},
-          {"missing_steps", s.missing_steps},
-          {"track_switches", to_json(s.track_switches)}};
-}
-
-std::string qj_key(double qj) { return "ekf-ca-qj" + fmt("%g", qj); }
+std::string qj_key(double qj) { return "ekf-ca-qj" + format_number("%g", qj); }
 
 struct Study {
   const R2AekfStudyOptions& o;
@@ -174,7 +142,7 @@ struct Study {
     ekf16.qj = 1.6;
     const std::vector<Filter> filters = {
         {qj_key(1.6), "EKF-CA, qj 1.6 (paper's baseline)", &find_filter("ekf-ca"), ekf16, false, false},
-        {qj_key(tuned_qj), "EKF-CA, qj " + fmt("%g", tuned_qj) + " (tuned, grid above)", &find_filter("ekf-ca"),
+        {qj_key(tuned_qj), "EKF-CA, qj " + format_number("%g", tuned_qj) + " (tuned, grid above)", &find_filter("ekf-ca"),
          tuned, false, false},
         {"r2aekf-paper", "R2-AEKF paper mode", &find_filter("r2aekf-paper"), base, true, true},
         {"r2aekf", "R2-AEKF default mode", &find_filter("r2aekf"), base, false, true},
@@ -200,14 +168,14 @@ struct Study {
         sums.push_back(s);
         write_step_csv(dir / (f.key + "_steps.csv"), mc.first.steps, mc.first.frames, scenario->info().loss_threshold_m);
         if (f.is_r2) write_scales(*scenario, f, dir / (f.key + "_scales.csv"));
-        std::fprintf(md, "| %s | %s | %s | %s | %s | %s | %zu/%zu |\n", f.label.c_str(), ci(s.rmse_m, "%.1f").c_str(),
-                     ci(s.peak_m, "%.0f").c_str(), ci(s.nees_pos, "%.1f").c_str(),
-                     ci(s.track_loss_s, "%.1f").c_str(), ci(s.recovery_s, "%.1f").c_str(), s.runs_without_loss,
+        std::fprintf(md, "| %s | %s | %s | %s | %s | %s | %zu/%zu |\n", f.label.c_str(), interval_text(s.rmse_m, "%.1f").c_str(),
+                     interval_text(s.peak_m, "%.0f").c_str(), interval_text(s.nees_pos, "%.1f").c_str(),
+                     interval_text(s.track_loss_s, "%.1f").c_str(), interval_text(s.recovery_s, "%.1f").c_str(), s.runs_without_loss,
                      s.runs);
-        table[name][f.key] = to_json(s);
+        table[name][f.key] = summary_metrics(s);
         table[name][f.key]["label"] = f.label;
-        std::printf("  %-4s %-44s RMSE %s  peak %s\n", name.c_str(), f.label.c_str(), ci(s.rmse_m, "%.1f").c_str(),
-                    ci(s.peak_m, "%.0f").c_str());
+        std::printf("  %-4s %-44s RMSE %s  peak %s\n", name.c_str(), f.label.c_str(), interval_text(s.rmse_m, "%.1f").c_str(),
+                    interval_text(s.peak_m, "%.0f").c_str());
         if (s.missing_steps > 0 || s.track_switches.mean > 0.0) {
           std::fprintf(md, "| (note: %zu scored frames without a confirmed track; %.2f track switches per run) "
                            "| | | | | | |\n",
@@ -224,11 +192,11 @@ struct Study {
                      name.c_str());
       }
       const auto ratio_row = [&](const char* label, const MonteCarloSummary& a, const MonteCarloSummary& b) {
-        std::fprintf(md, "| %s | %s | %s | %s | %s | %s | |\n", label, fmt("%.3f", a.rmse_m.mean / b.rmse_m.mean).c_str(),
-                     fmt("%.3f", a.peak_m.mean / b.peak_m.mean).c_str(),
-                     fmt("%.3f", a.nees_pos.mean / b.nees_pos.mean).c_str(),
-                     fmt("%.3f", a.track_loss_s.mean / b.track_loss_s.mean).c_str(),
-                     fmt("%.3f", a.recovery_s.mean / b.recovery_s.mean).c_str());
+        std::fprintf(md, "| %s | %s | %s | %s | %s | %s | |\n", label, format_number("%.3f", a.rmse_m.mean / b.rmse_m.mean).c_str(),
+                     format_number("%.3f", a.peak_m.mean / b.peak_m.mean).c_str(),
+                     format_number("%.3f", a.nees_pos.mean / b.nees_pos.mean).c_str(),
+                     format_number("%.3f", a.track_loss_s.mean / b.track_loss_s.mean).c_str(),
+                     format_number("%.3f", a.recovery_s.mean / b.recovery_s.mean).c_str());
       };
       ratio_row("measured ratio, paper mode / EKF-CA qj 1.6", sums[2], sums[0]);
       ratio_row("measured ratio, default mode / EKF-CA qj 1.6", sums[3], sums[0]);
@@ -314,10 +282,10 @@ struct Study {
         std::string change;
         if (v[i].base >= 0) {
           const double b = rmse[static_cast<std::size_t>(v[i].base)][j];
-          change = " (" + fmt("%+.0f", 100.0 * (s.rmse_m.mean / b - 1.0)) + " %)";
+          change = " (" + format_number("%+.0f", 100.0 * (s.rmse_m.mean / b - 1.0)) + " %)";
         }
-        std::fprintf(md, " %s%s |", ci(s.rmse_m, "%.1f").c_str(), change.c_str());
-        row[name] = {{"rmse_m", to_json(s.rmse_m)}, {"peak_m", to_json(s.peak_m)}};
+        std::fprintf(md, " %s%s |", interval_text(s.rmse_m, "%.1f").c_str(), change.c_str());
+        row[name] = {{"rmse_m", interval_json(s.rmse_m)}, {"peak_m", interval_json(s.peak_m)}};
       }
       std::fprintf(md, "\n");
       std::printf("  %-55s RMSE", v[i].label.c_str());
@@ -466,16 +434,8 @@ struct Study {
     return out;
   }
 
-  void plots() const {
-    if (!o.plots) return;
-    const std::filesystem::path script = std::filesystem::path(KESTREL_SIM_PLOT_SCRIPT).parent_path() / "r2aekf_plots.py";
-    const char* py = std::getenv("KESTREL_PYTHON");
-    std::string cmd = std::string("'") + (py != nullptr && *py != '\0' ? py : "/usr/bin/python3") + "' '" +
-                      script.string() + "' --dir '" + out.string() + "'";
-    std::fflush(stdout);
-    const int rc = std::system(cmd.c_str());
-    if (rc != 0) std::fprintf(stderr, "warning: plotting failed (%d); results are unaffected. Command: %s\n", rc, cmd.c_str());
-  }
+  /// @return true only if the figures were drawn.
+  bool plots() const { return o.plots && run_named_plot_script("r2aekf_plots.py", {"--dir", out.string()}); }
 };
 
 }  // namespace
@@ -504,11 +464,11 @@ int run_r2aekf_study(const R2AekfStudyOptions& o) {
                        {"select_seed", o.select_seed},
                        {"sensitivity_runs", o.sensitivity_runs},
                        {"timing_runs", o.timing_runs}};
-  std::ofstream(s.out / "study.json") << s.json.dump(2) << "\n";
+  write_json_file(s.out / "study.json", s.json);
   std::fflush(md.get());
-  s.plots();
+  const bool plotted = s.plots();
   std::printf("wrote %s, %s, per-scenario CSVs under %s/<scenario>/%s\n", md_path.c_str(),
-              (s.out / "study.json").c_str(), s.out.c_str(), o.plots ? " and fig2-fig5 PNGs" : "");
+              (s.out / "study.json").c_str(), s.out.c_str(), plotted ? " and fig2-fig5 PNGs" : "");
   return 0;
 }
 

@@ -31,6 +31,11 @@ struct EntryContext {
   unsigned jobs = 1;                ///< Worker threads the runs used.
 };
 
+/// Every metric of a Monte Carlo summary (intervals as {mean, ci95_low,
+/// ci95_high, n}, step times), without where it came from.
+nlohmann::json summary_metrics(const MonteCarloSummary& summary);
+
+/// summary_metrics with the context: one results[scenario][filter] entry.
 nlohmann::json summary_entry(const EntryContext& context, const MonteCarloSummary& summary);
 
 /// Put `entry` at results[scenario][filter] of the summary file at `path`,

@@ -1,46 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "report/uw_files.hpp"
 
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <stdexcept>
 
 #include "csv/sensor_truth_csv.hpp"
-
-#ifndef KESTREL_SIM_PLOT_SCRIPT
-#error "KESTREL_SIM_PLOT_SCRIPT must name plots/plot_results.py (set by host_sim/CMakeLists.txt)"
-#endif
+#include "plots/plot_runner.hpp"
+#include "report/output_files.hpp"
 
 namespace kestrel::sim {
 
 namespace {
 
-std::ofstream open_out(const std::filesystem::path& path) {
-  std::ofstream out(path, std::ios::trunc);
-  if (!out) throw std::runtime_error("cannot create '" + path.string() + "'");
-  out.precision(10);
-  return out;
-}
-
-/// A number, or an empty cell for NaN.
-std::string cell(double v) {
-  if (!std::isfinite(v)) return "";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
-
-nlohmann::json num(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
-
-nlohmann::json ci_json(const MeanCi& m) {
-  return {{"mean", num(m.mean)}, {"ci95_low", num(m.ci95_low)}, {"ci95_high", num(m.ci95_high)}, {"n", m.n}};
-}
-
 nlohmann::json series(const std::vector<double>& v) {
   nlohmann::json a = nlohmann::json::array();
-  for (const double x : v) a.push_back(num(x));
+  for (const double x : v) a.push_back(number_or_null(x));
   return a;
 }
 
@@ -54,11 +28,12 @@ void write_uw_runs_csv(const std::filesystem::path& path, const std::vector<UwRu
          "c_err_std_mps,arrivals,outliers,outliers_gated,good_gated,gated,predict_only,reinitialisations,"
          "frames_refused,depth_reflections\n";
   for (const UwRunMetrics& r : runs) {
-    out << r.seed << ',' << r.init_frame << ',' << r.scored_frames << ',' << cell(r.rmse_3d_m) << ','
-        << cell(r.rmse_h_m) << ',' << cell(r.rmse_depth_m) << ',' << cell(r.peak_3d_m) << ',' << cell(r.nees) << ','
-        << cell(r.c_err_mean_mps) << ',' << cell(r.c_err_std_mps) << ',' << r.arrivals << ',' << r.outliers << ','
-        << r.outliers_gated << ',' << r.good_gated << ',' << r.gated << ',' << r.predict_only << ','
-        << r.reinitialisations << ',' << r.frames_refused << ',' << r.depth_reflections << '\n';
+    out << r.seed << ',' << r.init_frame << ',' << r.scored_frames << ',' << csv_cell(r.rmse_3d_m) << ','
+        << csv_cell(r.rmse_h_m) << ',' << csv_cell(r.rmse_depth_m) << ',' << csv_cell(r.peak_3d_m) << ','
+        << csv_cell(r.nees) << ',' << csv_cell(r.c_err_mean_mps) << ',' << csv_cell(r.c_err_std_mps) << ','
+        << r.arrivals << ',' << r.outliers << ',' << r.outliers_gated << ',' << r.good_gated << ',' << r.gated << ','
+        << r.predict_only << ',' << r.reinitialisations << ',' << r.frames_refused << ',' << r.depth_reflections
+        << '\n';
   }
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
@@ -67,8 +42,8 @@ void write_uw_steps_csv(const std::filesystem::path& path, const UwSummary& s) {
   std::ofstream out = open_out(path);
   out << "frame,runs_scored,rmse_3d_m,rmse_h_m,rmse_depth_m,c_err_rms_mps\n";
   for (std::size_t k = 0; k < s.step_runs.size(); ++k) {
-    out << k << ',' << s.step_runs[k] << ',' << cell(s.step_rmse_3d_m[k]) << ',' << cell(s.step_rmse_h_m[k]) << ','
-        << cell(s.step_rmse_depth_m[k]) << ',' << cell(s.step_c_err_rms_mps[k]) << '\n';
+    out << k << ',' << s.step_runs[k] << ',' << csv_cell(s.step_rmse_3d_m[k]) << ',' << csv_cell(s.step_rmse_h_m[k])
+        << ',' << csv_cell(s.step_rmse_depth_m[k]) << ',' << csv_cell(s.step_c_err_rms_mps[k]) << '\n';
   }
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
@@ -86,10 +61,10 @@ void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& ru
       for (std::size_t i = 0; i < fr.arrivals.size(); ++i) {
         const UwArrivalRecord& a = fr.arrivals[i];
         const std::uint32_t bit = 1u << (2u * a.beacon + static_cast<std::uint32_t>(a.path));
-        f << k << ',' << cell(run.truth[k].t_s) << ',' << static_cast<int>(a.beacon) << ',' << path_name(a.path)
-          << ',' << cell(a.true_toa_s) << ',' << cell(a.toa_s) << ',' << fr.wire.sonar[i].time_of_flight_ns << ','
-          << (a.outlier ? 1 : 0) << ',' << cell(a.outlier_s * 1e3) << ',' << ((o.fused & bit) != 0 ? 1 : 0) << ','
-          << ((o.gated & bit) != 0 ? 1 : 0) << '\n';
+        f << k << ',' << csv_cell(run.truth[k].t_s) << ',' << static_cast<int>(a.beacon) << ',' << path_name(a.path)
+          << ',' << csv_cell(a.true_toa_s) << ',' << csv_cell(a.toa_s) << ',' << fr.wire.sonar[i].time_of_flight_ns
+          << ',' << (a.outlier ? 1 : 0) << ',' << csv_cell(a.outlier_s * 1e3) << ',' << ((o.fused & bit) != 0 ? 1 : 0)
+          << ',' << ((o.gated & bit) != 0 ? 1 : 0) << '\n';
       }
     }
   }
@@ -106,16 +81,16 @@ void write_uw_track_csv(const std::filesystem::path& path, const std::vector<UwF
        "sd_x_m,sd_y_m,sd_z_m,sd_vx_mps,sd_vy_mps,sd_vz_mps,sd_c_mps,fused,gated,nis,step_ns\n";
   for (std::size_t k = 0; k < n; ++k) {
     const UwFrameOutcome& o = frames[k];
-    f << k << ',' << cell(time_s[k]) << ',' << to_string(o.status) << ',' << (o.reported ? 1 : 0) << ','
+    f << k << ',' << csv_cell(time_s[k]) << ',' << to_string(o.status) << ',' << (o.reported ? 1 : 0) << ','
       << (o.initialised ? 1 : 0) << ',' << (o.predict_only ? 1 : 0);
-    for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.x[i]) : "");
-    for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? cell(o.sd[i]) : "");
+    for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? csv_cell(o.x[i]) : "");
+    for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? csv_cell(o.sd[i]) : "");
     int fused = 0, gated = 0;
     for (int b = 0; b < 32; ++b) {
       fused += static_cast<int>((o.fused >> b) & 1u);
       gated += static_cast<int>((o.gated >> b) & 1u);
     }
-    f << ',' << fused << ',' << gated << ',' << (o.reported ? cell(o.nis) : "") << ',' << o.step_ns << '\n';
+    f << ',' << fused << ',' << gated << ',' << (o.reported ? csv_cell(o.nis) : "") << ',' << o.step_ns << '\n';
   }
   if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
@@ -168,15 +143,15 @@ nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrack
   j["tracker"] = uw_params_json(params);
   j["runs"] = s.runs;
   j["seeds"] = {config.base_seed, config.base_seed + config.runs - 1};
-  j["rmse_3d_m"] = ci_json(s.rmse_3d_m);
-  j["rmse_h_m"] = ci_json(s.rmse_h_m);
-  j["rmse_depth_m"] = ci_json(s.rmse_depth_m);
-  j["peak_3d_m"] = ci_json(s.peak_3d_m);
-  j["nees"] = ci_json(s.nees);
-  j["c_err_std_per_run_mps"] = ci_json(s.c_err_std_mps);
-  j["c_err_mean_per_run_mps"] = ci_json(s.c_err_mean_mps);
-  j["c_err_std_pooled_mps"] = num(s.pooled_c_err_std_mps);
-  j["c_err_mean_pooled_mps"] = num(s.pooled_c_err_mean_mps);
+  j["rmse_3d_m"] = interval_json(s.rmse_3d_m);
+  j["rmse_h_m"] = interval_json(s.rmse_h_m);
+  j["rmse_depth_m"] = interval_json(s.rmse_depth_m);
+  j["peak_3d_m"] = interval_json(s.peak_3d_m);
+  j["nees"] = interval_json(s.nees);
+  j["c_err_std_per_run_mps"] = interval_json(s.c_err_std_mps);
+  j["c_err_mean_per_run_mps"] = interval_json(s.c_err_mean_mps);
+  j["c_err_std_pooled_mps"] = number_or_null(s.pooled_c_err_std_mps);
+  j["c_err_mean_pooled_mps"] = number_or_null(s.pooled_c_err_mean_mps);
   j["gate"] = {{"arrivals", s.arrivals},       {"outliers", s.outliers},
                {"outliers_gated", s.outliers_gated}, {"good_gated", s.good_gated},
                {"gated", s.gated},             {"predict_only_frames", s.predict_only}};
@@ -196,31 +171,8 @@ nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrack
   return j;
 }
 
-void write_uw_json(const std::filesystem::path& path, const nlohmann::json& j) {
-  std::ofstream out = open_out(path);
-  out << j.dump(2) << '\n';
-  if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
-}
-
 bool plot_uw(const std::filesystem::path& dir, const std::string& title) {
-  // plots/uw_plots.py sits beside plot_results.py; the interpreter is the
-  // one plot_runner uses (KESTREL_PYTHON overrides it).
-  const auto quote = [](const std::string& v) {
-    std::string q = "'";
-    for (const char ch : v) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-  };
-  const char* py = std::getenv("KESTREL_PYTHON");
-  const std::string python = py != nullptr && *py != '\0' ? py : "/usr/bin/python3";
-  const std::filesystem::path script = std::filesystem::path(KESTREL_SIM_PLOT_SCRIPT).parent_path() / "uw_plots.py";
-  const std::string cmd =
-      quote(python) + " " + quote(script.string()) + " --dir " + quote(dir.string()) + " --title " + quote(title);
-  std::fflush(stdout);
-  const int rc = std::system(cmd.c_str());
-  if (rc == 0) return true;
-  std::fprintf(stderr, "warning: UW plotting failed (status %d); results are unaffected. Command: %s\n", rc,
-               cmd.c_str());
-  return false;
+  return run_named_plot_script("uw_plots.py", {"--dir", dir.string(), "--title", title});
 }
 
 }  // namespace kestrel::sim

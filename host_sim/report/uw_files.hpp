@@ -42,7 +42,6 @@ nlohmann::json uw_scenario_json(const UwScenarioConfig& scenario);
 nlohmann::json uw_params_json(const UnderwaterTrackerParams& params);
 nlohmann::json uw_summary_json(const UwScenarioConfig& scenario, const UnderwaterTrackerParams& params,
                                const UwMonteCarloConfig& config, const UwSummary& summary);
-void write_uw_json(const std::filesystem::path& path, const nlohmann::json& j);
 
 /// Run plots/uw_plots.py over the CSVs of `dir` (best effort: a failure
 /// prints a warning). @return true on success.

@@ -2,11 +2,11 @@
 #include "stream/asterix_stream.hpp"
 
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
 #include "kestrel/hal/asterix_units.hpp"
+#include "stream/feed_frames.hpp"
 #include "stream/quantise.hpp"
 
 namespace kestrel::sim {
@@ -89,21 +89,7 @@ std::vector<std::uint8_t> encode_cat048_stream(const std::vector<MeasurementFram
 std::vector<MeasurementFrame> decode_cat048_stream(const std::vector<std::uint8_t>& bytes, std::size_t& skipped,
                                                    AsterixReadCounts& counts) {
   host::AsterixFileFeed feed(bytes);
-  std::vector<MeasurementFrame> frames;
-  skipped = 0;
-  hal::Frame frame{};
-  for (;;) {
-    const Status s = feed.poll(frame);
-    if (s == Status::kNoData) break;
-    if (s == Status::kOk || s == Status::kTooManyCandidates) {
-      frames.push_back(from_wire_frame(frame));
-    } else {
-      MeasurementFrame placeholder;
-      placeholder.t_s = std::numeric_limits<double>::quiet_NaN();
-      frames.push_back(placeholder);
-      ++skipped;
-    }
-  }
+  std::vector<MeasurementFrame> frames = frames_of_feed(feed, skipped);
   counts.feed = feed.counters();
   counts.reader = feed.reader_counters();
   return frames;

@@ -3,7 +3,6 @@
 
 #include <array>
 #include <fstream>
-#include <limits>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -11,22 +10,25 @@
 #include "kestrel/hal/frame_codec.hpp"
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/host/stream_file_feed.hpp"
+#include "stream/feed_frames.hpp"
 #include "stream/quantise.hpp"
 
 namespace kestrel::sim {
 
+void append_encoded(const hal::Frame& wire, std::vector<std::uint8_t>& bytes) {
+  std::array<std::uint8_t, hal::wire::kMaxEncodedFrameBytes> buffer;
+  std::size_t written = 0;
+  const Status s = hal::encode(wire, buffer, written);
+  if (s != Status::kOk) {
+    throw std::runtime_error("cannot encode the frame at t = " + std::to_string(static_cast<double>(wire.t_us) * 1e-6) +
+                             " s: " + to_string(s));
+  }
+  bytes.insert(bytes.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written));
+}
+
 std::vector<std::uint8_t> encode_stream(const std::vector<MeasurementFrame>& frames) {
   std::vector<std::uint8_t> bytes;
-  std::array<std::uint8_t, hal::wire::kMaxEncodedFrameBytes> buffer{};
-  for (const MeasurementFrame& f : frames) {
-    const hal::Frame wire = to_wire_frame(f);
-    std::size_t written = 0;
-    const Status s = hal::encode(wire, buffer, written);
-    if (s != Status::kOk) {
-      throw std::runtime_error("cannot encode frame at t = " + std::to_string(f.t_s) + " s: " + to_string(s));
-    }
-    bytes.insert(bytes.end(), buffer.begin(), buffer.begin() + static_cast<std::ptrdiff_t>(written));
-  }
+  for (const MeasurementFrame& f : frames) append_encoded(to_wire_frame(f), bytes);
   return bytes;
 }
 
@@ -39,24 +41,7 @@ void write_bytes(const std::filesystem::path& path, const std::vector<std::uint8
 
 std::vector<MeasurementFrame> decode_stream(const std::vector<std::uint8_t>& bytes, std::size_t& skipped) {
   host::StreamFileFeed feed(bytes);
-  std::vector<MeasurementFrame> frames;
-  skipped = 0;
-  hal::Frame frame{};
-  for (;;) {
-    const Status s = feed.poll(frame);
-    if (s == Status::kNoData) break;
-    if (s == Status::kOk || s == Status::kTooManyCandidates) {
-      frames.push_back(from_wire_frame(frame));
-    } else {
-      // Keep the place of the damaged frame so indices match the Runner's
-      // frame count; the placeholder has no time and no plots.
-      MeasurementFrame placeholder;
-      placeholder.t_s = std::numeric_limits<double>::quiet_NaN();
-      frames.push_back(placeholder);
-      ++skipped;
-    }
-  }
-  return frames;
+  return frames_of_feed(feed, skipped);
 }
 
 }  // namespace kestrel::sim

@@ -8,12 +8,17 @@
 #include <filesystem>
 #include <vector>
 
+#include "kestrel/hal/frame.hpp"
 #include "scenarios/scenario.hpp"
 
 namespace kestrel::sim {
 
-/// Quantise and encode every frame, in order.
-/// Throws std::runtime_error if a frame cannot be encoded.
+/// Append `wire`, encoded with hal::encode, to `bytes`: the one encoder of
+/// every sensor kind's stream. Throws std::runtime_error (naming the frame's
+/// time) if it cannot be encoded.
+void append_encoded(const hal::Frame& wire, std::vector<std::uint8_t>& bytes);
+
+/// Quantise and encode every radar frame, in order (append_encoded).
 std::vector<std::uint8_t> encode_stream(const std::vector<MeasurementFrame>& frames);
 
 /// Write bytes to a file (created or truncated). Throws std::runtime_error.
