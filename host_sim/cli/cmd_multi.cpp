@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "filters/sensor_settings.hpp"
 #include "metrics/monte_carlo_stats.hpp"
 #include "montecarlo/multi_run.hpp"
 #include "pipeline/worker_pool.hpp"
@@ -169,17 +170,7 @@ int cmd_multi(const MultiOptions& o) {
   for (const std::string& s : o.sets) settings.push_back(parse_setting(s, "--set"));
   apply_settings(settings, config.options);
   if (o.qj.has_value()) config.options.qj = o.qj;
-  if (o.gate_tentative) {
-    const struct {
-      double p;
-      GateProbability g;
-    } table[] = {{0.90, GateProbability::k90}, {0.95, GateProbability::k95}, {0.99, GateProbability::k99},
-                 {0.995, GateProbability::k995}, {0.999, GateProbability::k999}};
-    for (const auto& e : table) {
-      if (std::abs(e.p - *o.gate_tentative) < 1e-9) config.gate_tentative = e.g;
-    }
-    if (!config.gate_tentative) throw std::invalid_argument("--gate-tentative must be 0.90, 0.95, 0.99, 0.995 or 0.999");
-  }
+  if (o.gate_tentative) config.gate_tentative = gate_option(*o.gate_tentative, "--gate-tentative");
   config.spa = SpaConfig{o.cutoff_m, o.order};
   config.persistence_steps = o.persistence_steps;
   config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));

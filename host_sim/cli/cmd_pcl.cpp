@@ -19,21 +19,6 @@ namespace kestrel::sim::cli {
 
 namespace {
 
-GateProbability gate_from(double p) {
-  const struct {
-    double p;
-    GateProbability g;
-  } table[] = {{0.90, GateProbability::k90},
-               {0.95, GateProbability::k95},
-               {0.99, GateProbability::k99},
-               {0.995, GateProbability::k995},
-               {0.999, GateProbability::k999}};
-  for (const auto& e : table) {
-    if (std::abs(e.p - p) < 1e-9) return e.g;
-  }
-  throw std::invalid_argument("gate probability must be 0.90, 0.95, 0.99, 0.995 or 0.999");
-}
-
 std::uint8_t small_count(unsigned v, const char* what) {
   if (v < 1 || v > 8) throw std::invalid_argument(std::string(what) + " must be 1..8");
   return static_cast<std::uint8_t>(v);
@@ -91,8 +76,8 @@ int cmd_pcl(const PclOptions& o) {
   if (o.confirm_m) params.confirm_m = small_count(*o.confirm_m, "--confirm-m");
   if (o.confirm_n) params.confirm_n = small_count(*o.confirm_n, "--confirm-n");
   if (params.confirm_m > params.confirm_n) throw std::invalid_argument("--confirm-m must not exceed --confirm-n");
-  if (o.gate_tentative) params.gate_tentative = gate_from(*o.gate_tentative);
-  if (o.gate_confirmed) params.gate_confirmed = gate_from(*o.gate_confirmed);
+  if (o.gate_tentative) params.gate_tentative = gate_option(*o.gate_tentative, "--gate-tentative");
+  if (o.gate_confirmed) params.gate_confirmed = gate_option(*o.gate_confirmed, "--gate-confirmed");
   if (o.min_start_doppler_hz) params.min_start_doppler_hz = *o.min_start_doppler_hz;
   if (o.max_coast_misses) params.max_coast_misses = static_cast<std::uint16_t>(*o.max_coast_misses);
   const auto probability = [](double v, const char* what) {

@@ -21,21 +21,6 @@ namespace kestrel::sim::cli {
 
 namespace {
 
-GateProbability gate_from(double p) {
-  const struct {
-    double p;
-    GateProbability g;
-  } table[] = {{0.90, GateProbability::k90},
-               {0.95, GateProbability::k95},
-               {0.99, GateProbability::k99},
-               {0.995, GateProbability::k995},
-               {0.999, GateProbability::k999}};
-  for (const auto& e : table) {
-    if (std::abs(e.p - p) < 1e-9) return e.g;
-  }
-  throw std::invalid_argument("gate probability must be 0.90, 0.95, 0.99, 0.995 or 0.999");
-}
-
 void print_ci(const char* name, const MeanCi& m, const char* unit) {
   std::printf("  %-34s %9.3f  [%.3f, %.3f] %s (n = %zu)\n", name, m.mean, m.ci95_low, m.ci95_high, unit, m.n);
 }
@@ -50,7 +35,7 @@ UnderwaterTrackerParams params_from(const UwOptions& o, const UwScenarioConfig& 
   }
   if (o.no_gate) p.per_channel_gate = false;
   if (o.ellipsoidal) p.ellipsoidal_gate = true;
-  if (o.ellipsoid_probability) p.ellipsoid_probability = gate_from(*o.ellipsoid_probability);
+  if (o.ellipsoid_probability) p.ellipsoid_probability = gate_option(*o.ellipsoid_probability, "--ellipsoid-p");
   if (o.accel_sigma_mps2) p.accel_sigma_mps2 = *o.accel_sigma_mps2;
   if (o.sound_speed_sigma) p.sound_speed_sigma_mps_per_sqrt_s = *o.sound_speed_sigma;
   if (o.reacquire_after) p.reacquire_after_lost_frames = static_cast<std::uint16_t>(*o.reacquire_after);

@@ -32,14 +32,10 @@ struct Key {
 };
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr GateProbability kGates[] = {GateProbability::k90, GateProbability::k95, GateProbability::k99,
-                                      GateProbability::k995, GateProbability::k999};
-
 GateProbability gate_of(double v) {
-  for (const GateProbability g : kGates) {
-    if (gate_probability(g) == v) return g;
-  }
-  return GateProbability::k99;  // never reached: check() refused the value
+  GateProbability g = GateProbability::k99;
+  (void)gate_probability_from(v, g);  // check() refused any other value
+  return g;
 }
 
 // clang-format off
@@ -203,9 +199,10 @@ template <class P>
 void check(const Setting& s, const Key<P>& k) {
   const double v = s.value;
   bool ok = std::isfinite(v);
+  GateProbability gate{};
   switch (k.type) {
     case Type::kBool: ok = ok && (v == 0.0 || v == 1.0); break;
-    case Type::kGate: ok = ok && gate_probability(gate_of(v)) == v; break;
+    case Type::kGate: ok = ok && gate_probability_from(v, gate); break;
     case Type::kWhole: ok = ok && v == std::floor(v); [[fallthrough]];
     case Type::kReal:
       ok = ok && (k.lo_open ? v > k.lo : v >= k.lo);
@@ -306,6 +303,14 @@ bool tracker_takes(hal::FrameKind kind, const std::string& key) {
 }
 
 }  // namespace
+
+GateProbability gate_option(double p, const char* option) {
+  GateProbability g{};
+  if (!gate_probability_from(p, g)) {
+    throw std::invalid_argument(std::string(option) + " must be 0.9, 0.95, 0.99, 0.995 or 0.999");
+  }
+  return g;
+}
 
 std::string trackers_taking(const std::string& key) {
   constexpr hal::FrameKind kKinds[] = {hal::FrameKind::kRadar, hal::FrameKind::kPcl, hal::FrameKind::kSonar};

@@ -34,6 +34,10 @@ std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& param
 /// trackers"), or "" when none does: what an unknown-key error names.
 std::string trackers_taking(const std::string& key);
 
+/// The gate of a command-line probability; throws std::invalid_argument
+/// naming `option` unless it is 0.9, 0.95, 0.99, 0.995 or 0.999.
+GateProbability gate_option(double p, const char* option);
+
 /// Throws std::invalid_argument unless every setting is a key of the
 /// tracker of `kind`'s frames (the radar keys of setting_table(), the PCL
 /// or the underwater tracker's), naming the key, where it was given, the

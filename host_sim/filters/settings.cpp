@@ -60,12 +60,7 @@ const RadarKey kRadarKeys[] = {
    "a track whose var(x) + var(y) exceeds this is deleted, m^2"},
   {"gate_probability", 0.0, true, 1.0, false,
    [](const RadarTrackerParams& p) { return gate_probability(p.gate); },
-   [](RadarTrackerParams& p, double v) {
-     for (GateProbability g : {GateProbability::k90, GateProbability::k95, GateProbability::k99,
-                               GateProbability::k995, GateProbability::k999}) {
-       if (gate_probability(g) == v) p.gate = g;
-     }
-   },
+   [](RadarTrackerParams& p, double v) { (void)gate_probability_from(v, p.gate); },  // check_range() refuses others
    "chi-square gate of tentative tracks, and of confirmed ones under the board's gate: "
    "0.9, 0.95, 0.99, 0.995 or 0.999"},
   {"robust_noise_gain", 0.0, false, 1.0, false,
@@ -149,11 +144,9 @@ void check_range(const Setting& s, const RadarKey& k) {
   const double v = s.value;
   const bool above = k.lo_open ? v > k.lo : v >= k.lo;
   if (!above || !(v <= k.hi) || (k.integer && v != std::floor(v))) refuse(s, "out of range (" + range_text(k) + ")");
-  if (std::string(k.key) == "gate_probability") {
-    RadarTrackerParams p;
-    p.gate = GateProbability::k90;
-    k.set(p, v);
-    if (gate_probability(p.gate) != v) refuse(s, "not one of " + range_text(k));
+  GateProbability g{};
+  if (std::string(k.key) == "gate_probability" && !gate_probability_from(v, g)) {
+    refuse(s, "not one of " + range_text(k));
   }
 }
 

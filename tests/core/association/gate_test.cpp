@@ -51,3 +51,25 @@ SCENARIO("chi-square gate thresholds are the quantiles they claim", "[gate]") {
     }
   }
 }
+
+TEST_CASE("A gate probability read as a number names its gate, and any other number none", "[gate]") {
+  using kestrel::GateProbability;
+  for (const GateProbability p : {GateProbability::k90, GateProbability::k95, GateProbability::k99,
+                                  GateProbability::k995, GateProbability::k999}) {
+    GateProbability g = p == GateProbability::k90 ? GateProbability::k999 : GateProbability::k90;
+    CHECK(kestrel::gate_probability_from(kestrel::gate_probability(p), g));
+    CHECK(g == p);
+  }
+  GateProbability g = GateProbability::k95;
+  CHECK(kestrel::gate_probability_from(0.995, g));  // as parsed from "0.995"
+  CHECK(g == GateProbability::k995);
+  for (const double other : {0.0, 0.97, 0.9901, 1.0, 99.0, -0.9, std::nan("")}) {
+    g = GateProbability::k95;
+    CHECK_FALSE(kestrel::gate_probability_from(other, g));
+    CHECK(g == GateProbability::k95);  // unchanged
+  }
+  static_assert([] {
+    GateProbability c{};
+    return kestrel::gate_probability_from(0.99, c) && c == GateProbability::k99;
+  }());
+}

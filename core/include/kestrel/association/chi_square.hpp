@@ -21,6 +21,20 @@ constexpr double gate_probability(GateProbability p) {
   return kProbability[static_cast<int>(p)];
 }
 
+/// The GateProbability whose probability is exactly `p` (0.90, 0.95, 0.99,
+/// 0.995 or 0.999, as parsed from those decimals): configuration read as a
+/// number. @return false, `g` unchanged, for any other value (NaN included).
+constexpr bool gate_probability_from(double p, GateProbability& g) {
+  for (int i = 0; i < 5; ++i) {
+    const auto candidate = static_cast<GateProbability>(i);
+    if (gate_probability(candidate) == p) {
+      g = candidate;
+      return true;
+    }
+  }
+  return false;
+}
+
 inline constexpr int kChiSquareMaxDim = 16;
 
 namespace detail {

@@ -741,7 +741,9 @@ class Tracker {
         if (table_[i].initialised) continue;
         if constexpr (kKeepsHypotheses) {
           // Made in this frame (a kept copy, a pairing plot's seed), or older
-          // than the last frame (the second pass).
+          // than the last frame (the second pass). pair_seed() may take slots
+          // while this loop runs, which the loop may or may not visit
+          // (TrackTable::SlotIterator); existed[] skips them either way.
           if (!existed[i] || table_[i].age != 0) continue;
         }
         pair_seed(i, scan, used, hit);
