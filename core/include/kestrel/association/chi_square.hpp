@@ -21,13 +21,15 @@ constexpr double gate_probability(GateProbability p) {
   return kProbability[static_cast<int>(p)];
 }
 
-/// The GateProbability whose probability is exactly `p` (0.90, 0.95, 0.99,
-/// 0.995 or 0.999, as parsed from those decimals): configuration read as a
-/// number. @return false, `g` unchanged, for any other value (NaN included).
+/// The GateProbability whose probability is `p` (0.90, 0.95, 0.99, 0.995
+/// or 0.999) to within 1e-12, the rounding of those decimals and no more:
+/// configuration read as a number. @return false, `g` unchanged, for any
+/// other value (NaN included).
 constexpr bool gate_probability_from(double p, GateProbability& g) {
   for (int i = 0; i < 5; ++i) {
     const auto candidate = static_cast<GateProbability>(i);
-    if (gate_probability(candidate) == p) {
+    const double d = gate_probability(candidate) - p;
+    if (d < 1e-12 && d > -1e-12) {
       g = candidate;
       return true;
     }

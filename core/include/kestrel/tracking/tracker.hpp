@@ -765,7 +765,9 @@ class Tracker {
   /// at all is deleted at once: every plot went to a track, so it was most
   /// likely an outlier of a tracked target, and waiting would only let it
   /// pair with that target's next missed plot.
-  void pair_seed(std::size_t i, const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
+  void pair_seed(std::size_t i, const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks])
+    requires(!Initiator::kSinglePoint)  // a single-point initiator has no pair (explicit instantiations)
+  {
     TrackT& tr = table_[i];
     const std::int64_t gap_us = elapsed_us(scan.t_us, tr.t_us);
     if (gap_us > config_.max_predict_us) return;  // manage() drops it
