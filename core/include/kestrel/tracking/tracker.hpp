@@ -764,10 +764,11 @@ class Tracker {
   /// a TwoPointHypothesesInitiator a seed that meets no unused measurement
   /// at all is deleted at once: every plot went to a track, so it was most
   /// likely an outlier of a tracked target, and waiting would only let it
-  /// pair with that target's next missed plot.
-  void pair_seed(std::size_t i, const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks])
-    requires(!Initiator::kSinglePoint)  // a single-point initiator has no pair (explicit instantiations)
-  {
+  /// pair with that target's next missed plot. A member template, so that
+  /// an explicit instantiation with a single-point initiator (no pair) does
+  /// not compile it.
+  template <class = Initiator>
+  void pair_seed(std::size_t i, const Scan& scan, bool (&used)[kMaxMeasurements], bool (&hit)[kMaxTracks]) {
     TrackT& tr = table_[i];
     const std::int64_t gap_us = elapsed_us(scan.t_us, tr.t_us);
     if (gap_us > config_.max_predict_us) return;  // manage() drops it
