@@ -57,7 +57,7 @@ void read_record(FrameKind kind, std::span<const std::uint8_t> rec, Frame& out, 
                                rec[kRadarSensorIdOffset]};
       return;
     case FrameKind::kSonar:
-      out.sonar[i] = ToaArrival{load_u32(rec, kSonarTimeOfFlightOffset), rec[kSonarBeaconIdOffset],
+      out.sonar[i] = SonarArrival{load_u32(rec, kSonarTimeOfFlightOffset), rec[kSonarBeaconIdOffset],
                                 static_cast<ToaPath>(rec[kSonarPathOffset])};
       return;
     case FrameKind::kPcl:
@@ -80,7 +80,7 @@ void write_record(const Frame& frame, std::size_t i, std::span<std::uint8_t> rec
       return;
     }
     case FrameKind::kSonar: {
-      const ToaArrival& a = frame.sonar[i];
+      const SonarArrival& a = frame.sonar[i];
       store_u32(rec, kSonarTimeOfFlightOffset, a.time_of_flight_ns);
       store_u8(rec, kSonarBeaconIdOffset, a.beacon_id);
       store_u8(rec, kSonarPathOffset, static_cast<std::uint8_t>(a.path));

@@ -15,7 +15,7 @@
 #include "csv/sensor_truth_csv.hpp"
 #include "csv/truth_csv.hpp"
 #include "montecarlo/pcl_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "scenarios/registry.hpp"
 #include "stream/asterix_stream.hpp"
 #include "stream/quantise.hpp"
@@ -32,7 +32,7 @@ bool is_name_of(const std::string& name, const std::vector<std::string>& names) 
 }
 
 // PCL and sonar scenarios: the wire stream and its truth, in the layout
-// `pcl` / `uw` write for run 0 (csv/sensor_truth_csv.hpp), which `replay
+// `pcl` / `sonar` write for run 0 (csv/sensor_truth_csv.hpp), which `replay
 // --truth` scores against.
 int generate_other_kind(const GenerateOptions& o) {
   std::vector<std::uint8_t> bytes;
@@ -50,14 +50,14 @@ int generate_other_kind(const GenerateOptions& o) {
     if (stream_path.has_parent_path()) std::filesystem::create_directories(stream_path.parent_path());
     write_pcl_truth_csv(truth_path, run);
   } else {
-    const UwScenarioConfig c = uw_config_by_name(o.scenario);
+    const SonarScenarioConfig c = sonar_config_by_name(o.scenario);
     name = c.name;
     if (o.asterix) throw std::invalid_argument("--asterix: CAT048 carries radar plots only, not " + name);
-    const UwScenarioRun run = generate_uw(c, o.seed);
-    bytes = encode_uw_stream(run);
+    const SonarScenarioRun run = generate_sonar(c, o.seed);
+    bytes = encode_sonar_stream(run);
     frames = run.frames.size();
     if (stream_path.has_parent_path()) std::filesystem::create_directories(stream_path.parent_path());
-    write_uw_truth_csv(truth_path, run);
+    write_sonar_truth_csv(truth_path, run);
   }
   write_bytes(stream_path, bytes);
   std::printf("%s seed %llu: %zu frames, %zu bytes\n  stream %s\n  truth  %s\n", name.c_str(),
@@ -68,7 +68,7 @@ int generate_other_kind(const GenerateOptions& o) {
 }  // namespace
 
 int cmd_generate(const GenerateOptions& o) {
-  if (is_name_of(o.scenario, pcl_scenario_names()) || is_name_of(o.scenario, uw_scenario_names())) {
+  if (is_name_of(o.scenario, pcl_scenario_names()) || is_name_of(o.scenario, sonar_scenario_names())) {
     return generate_other_kind(o);
   }
   const auto scenario = make_scenario(o.scenario);

@@ -28,7 +28,7 @@ int cmd_list(bool settings) {
       const char* title;
       std::vector<SettingInfo> table;
     } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, pcl, replay of a PCL stream)", pcl_setting_table()},
-                  {"the underwater tracker (run -s uw003..., uw, replay of a sonar stream)", uw_setting_table()}};
+                  {"the sonar tracker (run -s uw003..., sonar, replay of a sonar stream)", sonar_setting_table()}};
     for (const auto& t : others) {
       std::printf("keys of --set KEY=VALUE and --config FILE for %s:\n", t.title);
       for (const SettingInfo& i : t.table) {
@@ -56,10 +56,10 @@ int cmd_list(bool settings) {
   std::printf("\n  filter %s: the PCL tracker (keys: list --settings; with `pcl`: --associator nn|gnn|pda, "
               "--manager m-of-n|score)\n",
               std::string(kPclFilterName).c_str());
-  std::printf("sonar scenarios (run, uw, generate; replay --stream of their streams, --scenario picks the "
+  std::printf("sonar scenarios (run, sonar, generate; replay --stream of their streams, --scenario picks the "
               "installation; timing):\n ");
-  for (const std::string& n : uw_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the underwater tracker (keys: list --settings; its other options on `uw`)\n", std::string(kSonarFilterName).c_str());
+  for (const std::string& n : sonar_scenario_names()) std::printf(" %s", n.c_str());
+  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; its other options on `sonar`)\n", std::string(kSonarFilterName).c_str());
   std::printf("multi-target radar scenarios (crossing, raid, formation-split above): multi only");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");

@@ -5,7 +5,7 @@
 // with a truth CSV, is scored like a scenario run; with --asterix-out its
 // reports are also CAT062. A PCL or sonar stream runs the tracker of its kind
 // with a scenario's sensor parameters and, with the truth CSV of its kind,
-// is scored with that kind's metrics, as `pcl` and `uw` score a run.
+// is scored with that kind's metrics, as `pcl` and `sonar` score a run.
 // --config and --set take the keys of the stream's kind.
 #include <algorithm>
 #include <cmath>
@@ -29,14 +29,14 @@
 #include "metrics/replay_scoring.hpp"
 #include "montecarlo/pcl_run.hpp"
 #include "montecarlo/single_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "plots/plot_runner.hpp"
 #include "report/pcl_files.hpp"
 #include "report/output_files.hpp"
 #include "report/results_table.hpp"
 #include "report/run_files.hpp"
 #include "report/summary_json.hpp"
-#include "report/uw_files.hpp"
+#include "report/sonar_files.hpp"
 #include "scenarios/sensor_kind.hpp"
 #include "stream/asterix_stream.hpp"
 #include "stream/quantise.hpp"
@@ -120,12 +120,12 @@ struct ReplayTruth {
   hal::FrameKind kind = hal::FrameKind::kRadar;
   std::vector<TruthSample> radar;
   std::vector<PclTruthRow> pcl;
-  std::vector<UwTruthRow> uw;
+  std::vector<SonarTruthRow> sonar;
   std::vector<double> times_s;
 };
 
 /// The kind's metrics of one run as summary fields: the figures `pcl` /
-/// `uw` write into their summaries, without their run-count and settings
+/// `sonar` write into their summaries, without their run-count and settings
 /// fields (the replay entry has its own).
 nlohmann::json metric_fields(nlohmann::json j, std::initializer_list<const char*> drop) {
   for (const char* key : drop) j.erase(key);
@@ -203,18 +203,18 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
   return r;
 }
 
-OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
-                          const UnderwaterTrackerParams& params, std::uint64_t budget_ns,
+OtherKindResult replay_sonar(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
+                          const SonarTrackerParams& params, std::uint64_t budget_ns,
                           const std::filesystem::path& dir, const ReplayTruth* truth) {
-  const UwScenarioConfig sc = uw_config_by_name(scenario_name);
-  const UwRunOutput out = run_uw_stream(std::move(bytes), params, budget_ns);
+  const SonarScenarioConfig sc = sonar_config_by_name(scenario_name);
+  const SonarRunOutput out = run_sonar_stream(std::move(bytes), params, budget_ns);
   OtherKindResult r;
   r.stats = out.stats;
-  r.tracks_csv = dir / "uw_track.csv";
+  r.tracks_csv = dir / "sonar_track.csv";
   std::vector<double> time_s;
   std::size_t reported = 0, fixes = 0, predict_only = 0;
   std::set<std::uint32_t> ids;
-  for (const UwFrameOutcome& f : out.frames) {
+  for (const SonarFrameOutcome& f : out.frames) {
     time_s.push_back(f.t_s);
     if (f.stepped) r.step_ns.push_back(f.step_ns);
     if (f.status != Status::kOk) ++r.frames_not_ok;
@@ -225,14 +225,14 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
     fixes += f.initialised ? 1 : 0;
     predict_only += f.predict_only ? 1 : 0;
   }
-  write_uw_track_csv(r.tracks_csv, out.frames, time_s);
+  write_sonar_track_csv(r.tracks_csv, out.frames, time_s);
   if (truth != nullptr) {
-    const UwReplayScore score = score_uw_replay(out, truth->uw);
-    const UwRunMetrics& m = score.metrics;
-    UwMonteCarloConfig config;
+    const SonarReplayScore score = score_sonar_replay(out, truth->sonar);
+    const SonarRunMetrics& m = score.metrics;
+    SonarMonteCarloConfig config;
     config.runs = 1;
     config.budget_ns = budget_ns;
-    r.entry.update(metric_fields(uw_summary_json(sc, params, config, summarise_uw({m}, budget_ns)),
+    r.entry.update(metric_fields(sonar_summary_json(sc, params, config, summarise_sonar({m}, budget_ns)),
                                  {"schema", "scenario", "tracker", "runs", "seeds", "per_step", "timing_ns",
                                   "frames_refused", "depth_reflections"}));
     r.entry["truth_frames"] = truth_match_json(score.match);
@@ -246,9 +246,9 @@ OtherKindResult replay_uw(std::vector<std::uint8_t> bytes, const std::string& sc
                std::to_string(m.arrivals) + ": true outliers " + std::to_string(m.outliers) + ", of which gated " +
                std::to_string(m.outliers_gated) + "; good arrivals gated " + std::to_string(m.good_gated);
   }
-  r.entry["sensor"] = uw_scenario_json(sc);
-  r.entry["tracker"] = uw_params_json(params);
-  r.entry["parameters"] = uw_parameters(params);  // every key, as the run used it
+  r.entry["sensor"] = sonar_scenario_json(sc);
+  r.entry["tracker"] = sonar_params_json(params);
+  r.entry["parameters"] = sonar_parameters(params);  // every key, as the run used it
   r.entry["frames_with_estimate"] = reported;
   r.entry["track_ids"] = ids.size();
   r.entry["initialisations"] = fixes;
@@ -280,13 +280,13 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   // The scenario's parameters under the settings, before anything is
   // written: a value out of range stops the replay with no directory made.
   PclTrackerParams pcl_params;
-  UnderwaterTrackerParams uw_params;
+  SonarTrackerParams sonar_params;
   if (kind == hal::FrameKind::kPcl) {
     pcl_params = pcl_params_for(pcl_config_by_name(scenario));
     apply_pcl_settings(settings, pcl_params);
   } else {
-    uw_params = uw_params_for(uw_config_by_name(scenario));
-    apply_uw_settings(settings, uw_params);
+    sonar_params = sonar_params_for(sonar_config_by_name(scenario));
+    apply_sonar_settings(settings, sonar_params);
   }
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
   const std::filesystem::path dir(o.out);
@@ -294,7 +294,7 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   const std::string filter(kind == hal::FrameKind::kPcl ? kPclFilterName : kSonarFilterName);
   OtherKindResult r = kind == hal::FrameKind::kPcl
                           ? replay_pcl(std::move(bytes), scenario, pcl_params, budget_ns, dir, truth)
-                          : replay_uw(std::move(bytes), scenario, uw_params, budget_ns, dir, truth);
+                          : replay_sonar(std::move(bytes), scenario, sonar_params, budget_ns, dir, truth);
   const StepTiming timing = summarise_step_times(r.step_ns, budget_ns);
   const std::string sensor_scenario = r.entry["sensor"]["name"].get<std::string>();
 
@@ -314,7 +314,7 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   merge_summary_file(dir / "summary.json", "replay", filter, entry);
 
   std::printf("replay %s: %s stream, %s tracker (%s) with the sensor parameters of %s%s\n", source.c_str(),
-              kind_name.c_str(), kind == hal::FrameKind::kPcl ? "PCL" : "underwater", filter.c_str(), sensor_scenario.c_str(),
+              kind_name.c_str(), kind == hal::FrameKind::kPcl ? "PCL" : "sonar", filter.c_str(), sensor_scenario.c_str(),
               o.scenario.empty() ? " (the default; --scenario chooses another)" : "");
   if (!settings.empty()) {
     std::printf("  parameters set by --config/--set:");
@@ -357,8 +357,8 @@ ReplayTruth read_replay_truth(const std::string& path, hal::FrameKind stream_kin
       for (const PclTruthRow& r : t.pcl) t.times_s.push_back(r.truth.t_s);
       break;
     case hal::FrameKind::kSonar:
-      t.uw = read_uw_truth_csv(path);
-      for (const UwTruthRow& r : t.uw) t.times_s.push_back(r.truth.t_s);
+      t.sonar = read_sonar_truth_csv(path);
+      for (const SonarTruthRow& r : t.sonar) t.times_s.push_back(r.truth.t_s);
       break;
     default:
       t.radar = read_truth_csv(std::filesystem::path(path));

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim run`: one scenario, one filter, N seeds. A PCL or sonar
-// scenario runs the Monte Carlo of `kestrel-sim pcl` / `uw` (the same code).
+// scenario runs the Monte Carlo of `kestrel-sim pcl` / `sonar` (the same code).
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -8,7 +8,7 @@
 #include <string>
 
 #include "cli/cmd_pcl.hpp"
-#include "cli/cmd_uw.hpp"
+#include "cli/cmd_sonar.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
 #include "plots/plot_runner.hpp"
@@ -59,12 +59,12 @@ void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::st
     throw std::invalid_argument(what + "; " + join_names(f.radar_only_given) +
                                 " set the radar filters and do not apply (the " + kind_name +
                                 " tracker's keys: `--set` / `--config`, `list --settings`; its other options: "
-                                "`kestrel-sim " + (kind == hal::FrameKind::kPcl ? "pcl" : "uw") + "`)");
+                                "`kestrel-sim " + (kind == hal::FrameKind::kPcl ? "pcl" : "sonar") + "`)");
   }
 }
 
 namespace {
-/// run's options as `pcl`'s or `uw`'s (their fields share the names).
+/// run's options as `pcl`'s or `sonar`'s (their fields share the names).
 template <class Options>
 Options sensor_options(const RunOptions& o) {
   Options s;
@@ -83,7 +83,7 @@ Options sensor_options(const RunOptions& o) {
 
 int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind) {
   if (kind == hal::FrameKind::kPcl) return cmd_pcl(sensor_options<PclOptions>(o));
-  if (kind == hal::FrameKind::kSonar) return cmd_uw(sensor_options<UwOptions>(o));
+  if (kind == hal::FrameKind::kSonar) return cmd_sonar(sensor_options<SonarOptions>(o));
   throw std::invalid_argument("scenario '" + o.scenario + "' is a radar scenario: `run` runs it with a radar filter");
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim suite`, the main job of `bash run.sh sim`: each paper's
 // system at a modest run count through the same commands a user runs one
-// by one (run, montecarlo, pcl, uw), then one report that links them all.
+// by one (run, montecarlo, pcl, sonar), then one report that links them all.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -62,8 +62,8 @@ bool wants(const SuiteOptions& o, const char* part) {
 
 void check_parts(const std::vector<std::string>& parts) {
   for (const std::string& p : parts) {
-    if (p != "radar" && p != "mc001" && p != "pcl" && p != "uw") {
-      throw std::invalid_argument("unknown suite part '" + p + "' (known: radar, mc001, pcl, uw)");
+    if (p != "radar" && p != "mc001" && p != "pcl" && p != "sonar") {
+      throw std::invalid_argument("unknown suite part '" + p + "' (known: radar, mc001, pcl, sonar)");
     }
   }
 }
@@ -87,7 +87,7 @@ std::vector<std::filesystem::path> fresh(const std::filesystem::path& root,
   return out;
 }
 
-/// The pcl or uw part as the `run` a user would type for it.
+/// The pcl or sonar part as the `run` a user would type for it.
 RunOptions sensor_run(const SuiteOptions& o, const std::string& scenario, unsigned jobs,
                       const std::filesystem::path& root) {
   RunOptions r;
@@ -172,14 +172,14 @@ int cmd_suite(const SuiteOptions& o) {
     report.pcl_figures = fresh(root, {"pcl002/pcl_range_doppler.png"}, started);
   }
 
-  if (wants(o, "uw")) {
-    banner("UW-003, paper 003's underwater tracker");
+  if (wants(o, "sonar")) {
+    banner("UW-003, paper 003's sonar tracker");
     if (run_sensor_scenario(sensor_run(o, "uw003", jobs, root), hal::FrameKind::kSonar) != 0) {
       throw std::runtime_error("UW-003 runs failed");
     }
-    report.uw_dir = "uw003";
-    report.uw_figures =
-        fresh(root, {"uw003/uw_track.png", "uw003/uw_error.png", "uw003/uw_sound_speed.png"}, started);
+    report.sonar_dir = "uw003";
+    report.sonar_figures =
+        fresh(root, {"uw003/sonar_track.png", "uw003/sonar_error.png", "uw003/sonar_sound_speed.png"}, started);
   }
 
   report.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim timing`: per-step latency of the real-time loop on the host
 // (docs/tracking.md), for a radar scenario and filter or the PCL or
-// underwater tracker on its scenario. Runs one job at a time so runs do not
+// sonar tracker on its scenario. Runs one job at a time so runs do not
 // compete for the cores; every step of every run enters the distribution.
 #include <cstdio>
 #include <optional>
@@ -13,7 +13,7 @@
 #include "cli/scenario_report.hpp"
 #include "filters/sensor_settings.hpp"
 #include "filters/filter_registry.hpp"
-#include "metrics/uw_metrics.hpp"
+#include "metrics/sonar_metrics.hpp"
 #include "montecarlo/monte_carlo.hpp"
 #include "montecarlo/pcl_monte_carlo.hpp"
 #include "report/results_table.hpp"
@@ -24,7 +24,7 @@ namespace kestrel::sim::cli {
 
 namespace {
 
-/// The PCL or underwater tracker over `o.runs` seeds of a PCL or sonar
+/// The PCL or sonar tracker over `o.runs` seeds of a PCL or sonar
 /// scenario, one job, with the tracker's keys of --config/--set: the same
 /// Monte Carlo as `run`, its step times alone.
 int timing_sensor_scenario(const TimingOptions& o, hal::FrameKind kind) {
@@ -47,17 +47,17 @@ int timing_sensor_scenario(const TimingOptions& o, hal::FrameKind kind) {
     what = scenario.name + " / PCL tracker (" + std::string(kPclFilterName) + ", nn, M-of-N), " +
            std::to_string(o.runs) + " runs";
   } else {
-    const UwScenarioConfig scenario = uw_config_by_name(o.scenario);
-    UnderwaterTrackerParams params = uw_params_for(scenario);
-    apply_uw_settings(settings, params);
-    UwMonteCarloConfig config;
+    const SonarScenarioConfig scenario = sonar_config_by_name(o.scenario);
+    SonarTrackerParams params = sonar_params_for(scenario);
+    apply_sonar_settings(settings, params);
+    SonarMonteCarloConfig config;
     config.runs = o.runs;
     config.base_seed = o.seed;
     config.jobs = 1;
     config.budget_ns = budget_ns;
-    const UwMonteCarloResult mc = run_uw_monte_carlo(scenario, params, config);
-    timing = summarise_uw(mc.runs, budget_ns).timing;
-    what = scenario.name + " / underwater tracker (" + std::string(kSonarFilterName) + "), " +
+    const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
+    timing = summarise_sonar(mc.runs, budget_ns).timing;
+    what = scenario.name + " / sonar tracker (" + std::string(kSonarFilterName) + "), " +
            std::to_string(o.runs) + " runs";
   }
   print_timing(stdout, what, timing);

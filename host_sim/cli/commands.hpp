@@ -83,10 +83,10 @@ struct RunOptions {
 int cmd_run(const RunOptions& o);
 
 /// `run` of a PCL or sonar scenario (`kind`): the Monte Carlo, files and
-/// printout of `pcl` / `uw` with run's scenario, runs, seed, jobs, out,
+/// printout of `pcl` / `sonar` with run's scenario, runs, seed, jobs, out,
 /// plots, budget and --config/--set (the keys of filters/sensor_settings.hpp).
-/// The one place run's options become PclOptions / UwOptions; suite's pcl
-/// and uw parts come through it too.
+/// The one place run's options become PclOptions / SonarOptions; suite's pcl
+/// and sonar parts come through it too.
 int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind);
 
 /// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).
@@ -96,8 +96,8 @@ void print_cat062_written(const std::string& path, const StreamRunResult& r);
 /// report, results/report.md (cli/cmd_suite.cpp).
 struct SuiteOptions {
   /// Parts to run: radar (S1/S2 filters, paper 000), mc001 (paper 001's
-  /// filter comparison), pcl (paper 002), uw (paper 003).
-  std::vector<std::string> parts{"radar", "mc001", "pcl", "uw"};
+  /// filter comparison), pcl (paper 002), sonar (paper 003).
+  std::vector<std::string> parts{"radar", "mc001", "pcl", "sonar"};
   std::vector<std::string> scenarios{"s1", "s2"};  ///< Radar scenarios.
   /// Radar filters, each NAME or NAME:qj=X (a tuned EKF-CA beside the
   /// paper's qj 1.6; the IMM, Kestrel's own best).

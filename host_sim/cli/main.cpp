@@ -17,7 +17,7 @@
 #include "cli/cmd_pcl.hpp"
 #include "cli/cmd_r2aekf.hpp"
 #include "cli/cmd_scalars.hpp"
-#include "cli/cmd_uw.hpp"
+#include "cli/cmd_sonar.hpp"
 #include "cli/commands.hpp"
 #include "kestrel/version.hpp"
 #include "scenarios/sensor_kind.hpp"
@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo runs of one scenario with one filter");
   run_cmd->add_option("--scenario,-s", run.scenario,
-                      "Scenario (see `list`): radar, or PCL/sonar (the Monte Carlo of `pcl` / `uw`)")
+                      "Scenario (see `list`): radar, or PCL/sonar (the Monte Carlo of `pcl` / `sonar`)")
       ->required();
   add_filter_options(run_cmd, run.filter);
   run_cmd->add_option("--runs,-n", run.runs, "Monte Carlo runs")->capture_default_str();
@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
   SuiteOptions suite;
   CLI::App* suite_cmd = app.add_subcommand(
       "suite", "The main job: each paper's system (radar S1/S2, MC-001, PCL-002, UW-003) and one report.md");
-  suite_cmd->add_option("--parts", suite.parts, "Parts: radar, mc001, pcl, uw")->capture_default_str();
+  suite_cmd->add_option("--parts", suite.parts, "Parts: radar, mc001, pcl, sonar")->capture_default_str();
   suite_cmd->add_option("--scenarios", suite.scenarios, "Radar scenarios")->capture_default_str();
   suite_cmd->add_option("--filters", suite.filters, "Radar filters, NAME or NAME:qj=X")->capture_default_str();
   add_model_options(suite_cmd, suite.options);
@@ -180,8 +180,8 @@ int main(int argc, char** argv) {
   kestrel::sim::R2AekfStudyOptions r2aekf;
   CLI::App* r2aekf_cmd = add_r2aekf_command(app, r2aekf);
 
-  UwOptions uw;
-  CLI::App* uw_cmd = add_uw_command(app, uw);
+  SonarOptions sonar;
+  CLI::App* sonar_cmd = add_sonar_command(app, sonar);
 
   ScalarsOptions scalars;
   CLI::App* scalars_cmd = add_scalars_command(app, scalars);
@@ -253,7 +253,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(montecarlo_cmd)) return cmd_montecarlo(montecarlo);
     if (app.got_subcommand(merge_cmd)) return cmd_merge(merge);
     if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);
-    if (app.got_subcommand(uw_cmd)) return cmd_uw(uw);
+    if (app.got_subcommand(sonar_cmd)) return cmd_sonar(sonar);
     if (app.got_subcommand(scalars_cmd)) return cmd_scalars(scalars);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());

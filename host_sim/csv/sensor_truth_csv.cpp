@@ -134,14 +134,14 @@ std::vector<PclTruthRow> read_pcl_truth_csv(const std::filesystem::path& path) {
   return rows;
 }
 
-void write_uw_truth_csv(const std::filesystem::path& path, const UwScenarioRun& run) {
+void write_sonar_truth_csv(const std::filesystem::path& path, const SonarScenarioRun& run) {
   const File f = create(path);
   std::fprintf(f.get(), "time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,channels,outlier_channels\n");
   for (std::size_t k = 0; k < run.truth.size(); ++k) {
-    const UwTruth& t = run.truth[k];
+    const SonarTruth& t = run.truth[k];
     std::uint32_t channels = 0, outliers = 0;
     if (k < run.frames.size()) {
-      for (const UwArrivalRecord& a : run.frames[k].arrivals) {
+      for (const SonarArrivalRecord& a : run.frames[k].arrivals) {
         const std::uint32_t bit = 1u << (2u * a.beacon + static_cast<std::uint32_t>(a.path));
         channels |= bit;
         if (a.outlier) outliers |= bit;
@@ -154,15 +154,15 @@ void write_uw_truth_csv(const std::filesystem::path& path, const UwScenarioRun& 
   finish(f, path);
 }
 
-std::vector<UwTruthRow> read_uw_truth_csv(const std::filesystem::path& path) {
+std::vector<SonarTruthRow> read_sonar_truth_csv(const std::filesystem::path& path) {
   std::ifstream in = open_in(path);
   CsvReader csv(in, path.string());
   const KinematicColumns kinematics(csv);
   const std::size_t c_c = csv.require_column("c_mps");
   const std::size_t c_ch = csv.require_column("channels"), c_out = csv.require_column("outlier_channels");
-  std::vector<UwTruthRow> rows;
+  std::vector<SonarTruthRow> rows;
   while (csv.next()) {
-    UwTruthRow r;
+    SonarTruthRow r;
     kinematics.read(csv, rows, r.truth);
     r.truth.c_mps = csv.number(c_c);
     r.channels = static_cast<std::uint32_t>(csv.integer(c_ch, 0, kChannelMask));

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Truth CSVs of the PCL and sonar scenarios (docs/host_sim.md, "Scoring a
 // PCL or sonar replay"), one row per frame time, written by `generate`
-// beside the stream and by `pcl` / `uw` for run 0, and read by `replay
+// beside the stream and by `pcl` / `sonar` for run 0, and read by `replay
 // --truth`. Beside the target's state each row carries what the kind's
 // scorer needs of the sensor's side: for PCL, whether the sensor detected
 // the target and the wire values of that detection (so the replay can find
@@ -42,15 +42,15 @@ void write_pcl_truth_csv(const std::filesystem::path& path, const PclScenarioRun
 /// times that do not increase.
 std::vector<PclTruthRow> read_pcl_truth_csv(const std::filesystem::path& path);
 
-struct UwTruthRow {
-  UwTruth truth;                      ///< The target and the sound speed.
+struct SonarTruthRow {
+  SonarTruth truth;                      ///< The target and the sound speed.
   std::uint32_t channels = 0;         ///< Arrivals the sonar sent (bit 2 beacon + path).
   std::uint32_t outlier_channels = 0; ///< Of those, the ones carrying an outlier delay.
 };
 
 /// time_s,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,channels,outlier_channels.
-void write_uw_truth_csv(const std::filesystem::path& path, const UwScenarioRun& run);
+void write_sonar_truth_csv(const std::filesystem::path& path, const SonarScenarioRun& run);
 /// Throws CsvError as read_pcl_truth_csv.
-std::vector<UwTruthRow> read_uw_truth_csv(const std::filesystem::path& path);
+std::vector<SonarTruthRow> read_sonar_truth_csv(const std::filesystem::path& path);
 
 }  // namespace kestrel::sim

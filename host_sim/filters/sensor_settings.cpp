@@ -9,7 +9,7 @@
 
 #include "kestrel/association/chi_square.hpp"
 #include "montecarlo/pcl_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 
 namespace kestrel::sim {
 
@@ -101,71 +101,71 @@ const Key<PclTrackerParams> kPclKeys[] = {
    "beta of score's deletion test, < 1 (pcl --missed-track-probability)"},
 };
 
-const Key<UnderwaterTrackerParams> kUwKeys[] = {
+const Key<SonarTrackerParams> kSonarKeys[] = {
   {"sigma_toa_s", Type::kReal, 0.0, true, kInf, true,
-   [](const UnderwaterTrackerParams& p) { return p.sigma_toa_s; },
-   [](UnderwaterTrackerParams& p, double v) { p.sigma_toa_s = v; },
+   [](const SonarTrackerParams& p) { return p.sigma_toa_s; },
+   [](SonarTrackerParams& p, double v) { p.sigma_toa_s = v; },
    "TOA noise sigma the filter assumes, s"},
   {"seabed_depth_m", Type::kReal, 0.0, true, kInf, true,
-   [](const UnderwaterTrackerParams& p) { return p.seabed_depth_m; },
-   [](UnderwaterTrackerParams& p, double v) { p.seabed_depth_m = v; },
+   [](const SonarTrackerParams& p) { return p.seabed_depth_m; },
+   [](SonarTrackerParams& p, double v) { p.seabed_depth_m = v; },
    "seabed depth D the reflected-path model assumes, m"},
   {"accel_sigma_mps2", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.accel_sigma_mps2; },
-   [](UnderwaterTrackerParams& p, double v) { p.accel_sigma_mps2 = v; },
-   "white acceleration per axis, m/s^2 (uw --accel-sigma)"},
+   [](const SonarTrackerParams& p) { return p.accel_sigma_mps2; },
+   [](SonarTrackerParams& p, double v) { p.accel_sigma_mps2 = v; },
+   "white acceleration per axis, m/s^2 (sonar --accel-sigma)"},
   {"sound_speed_sigma_mps_per_sqrt_s", Type::kReal, 0.0, false, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.sound_speed_sigma_mps_per_sqrt_s; },
-   [](UnderwaterTrackerParams& p, double v) { p.sound_speed_sigma_mps_per_sqrt_s = v; },
-   "sound-speed random walk, m/s per sqrt(s) (uw --sound-speed-sigma)"},
+   [](const SonarTrackerParams& p) { return p.sound_speed_sigma_mps_per_sqrt_s; },
+   [](SonarTrackerParams& p, double v) { p.sound_speed_sigma_mps_per_sqrt_s = v; },
+   "sound-speed random walk, m/s per sqrt(s) (sonar --sound-speed-sigma)"},
   {"initial_sound_speed_mps", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.initial_sound_speed_mps; },
-   [](UnderwaterTrackerParams& p, double v) { p.initial_sound_speed_mps = v; },
+   [](const SonarTrackerParams& p) { return p.initial_sound_speed_mps; },
+   [](SonarTrackerParams& p, double v) { p.initial_sound_speed_mps = v; },
    "c of the first fix and of the filter start, m/s"},
   {"initial_sound_speed_sigma_mps", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.initial_sound_speed_sigma_mps; },
-   [](UnderwaterTrackerParams& p, double v) { p.initial_sound_speed_sigma_mps = v; },
+   [](const SonarTrackerParams& p) { return p.initial_sound_speed_sigma_mps; },
+   [](SonarTrackerParams& p, double v) { p.initial_sound_speed_sigma_mps = v; },
    "initial sound-speed sigma, m/s"},
   {"initial_velocity_sigma_mps", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.initial_velocity_sigma_mps; },
-   [](UnderwaterTrackerParams& p, double v) { p.initial_velocity_sigma_mps = v; },
+   [](const SonarTrackerParams& p) { return p.initial_velocity_sigma_mps; },
+   [](SonarTrackerParams& p, double v) { p.initial_velocity_sigma_mps = v; },
    "initial velocity sigma per axis, m/s"},
   {"initial_position_sigma_m", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.initial_position_sigma_m; },
-   [](UnderwaterTrackerParams& p, double v) { p.initial_position_sigma_m = v; },
+   [](const SonarTrackerParams& p) { return p.initial_position_sigma_m; },
+   [](SonarTrackerParams& p, double v) { p.initial_position_sigma_m = v; },
    "prior position sigma before the first update, m"},
   {"per_channel_gate", Type::kBool, 0, false, 0, false,
-   [](const UnderwaterTrackerParams& p) { return p.per_channel_gate ? 1.0 : 0.0; },
-   [](UnderwaterTrackerParams& p, double v) { p.per_channel_gate = v == 1.0; },
-   "per-channel gate on (uw --no-gate turns it off)"},
+   [](const SonarTrackerParams& p) { return p.per_channel_gate ? 1.0 : 0.0; },
+   [](SonarTrackerParams& p, double v) { p.per_channel_gate = v == 1.0; },
+   "per-channel gate on (sonar --no-gate turns it off)"},
   {"gate_k_sigma", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.gate_k_sigma; },
-   [](UnderwaterTrackerParams& p, double v) { p.gate_k_sigma = v; },
-   "per-channel gate multiplier k (uw --gate-k)"},
+   [](const SonarTrackerParams& p) { return p.gate_k_sigma; },
+   [](SonarTrackerParams& p, double v) { p.gate_k_sigma = v; },
+   "per-channel gate multiplier k (sonar --gate-k)"},
   {"ellipsoidal_gate", Type::kBool, 0, false, 0, false,
-   [](const UnderwaterTrackerParams& p) { return p.ellipsoidal_gate ? 1.0 : 0.0; },
-   [](UnderwaterTrackerParams& p, double v) { p.ellipsoidal_gate = v == 1.0; },
-   "ellipsoidal gate on, after the per-channel gate (uw --ellipsoidal)"},
+   [](const SonarTrackerParams& p) { return p.ellipsoidal_gate ? 1.0 : 0.0; },
+   [](SonarTrackerParams& p, double v) { p.ellipsoidal_gate = v == 1.0; },
+   "ellipsoidal gate on, after the per-channel gate (sonar --ellipsoidal)"},
   {"ellipsoid_probability", Type::kGate, 0, false, 0, false,
-   [](const UnderwaterTrackerParams& p) { return gate_probability(p.ellipsoid_probability); },
-   [](UnderwaterTrackerParams& p, double v) { p.ellipsoid_probability = gate_of(v); },
-   "the ellipsoidal gate's probability (uw --ellipsoid-p)"},
+   [](const SonarTrackerParams& p) { return gate_probability(p.ellipsoid_probability); },
+   [](SonarTrackerParams& p, double v) { p.ellipsoid_probability = gate_of(v); },
+   "the ellipsoidal gate's probability (sonar --ellipsoid-p)"},
   {"reject_sigma", Type::kReal, 0.0, true, kInf, false,
-   [](const UnderwaterTrackerParams& p) { return p.reject_sigma; },
-   [](UnderwaterTrackerParams& p, double v) { p.reject_sigma = v; },
+   [](const SonarTrackerParams& p) { return p.reject_sigma; },
+   [](SonarTrackerParams& p, double v) { p.reject_sigma = v; },
    "multilateration fix: arrivals off by more than this many sigma are rejected"},
   {"reacquire_after_lost_frames", Type::kWhole, 0.0, false, 65535.0, false,
-   [](const UnderwaterTrackerParams& p) { return static_cast<double>(p.reacquire_after_lost_frames); },
-   [](UnderwaterTrackerParams& p, double v) { p.reacquire_after_lost_frames = static_cast<std::uint16_t>(v); },
-   "re-run the fix after this many frames in a row fusing at most half their arrivals, 0: never (uw --reacquire-after)"},
+   [](const SonarTrackerParams& p) { return static_cast<double>(p.reacquire_after_lost_frames); },
+   [](SonarTrackerParams& p, double v) { p.reacquire_after_lost_frames = static_cast<std::uint16_t>(v); },
+   "re-run the fix after this many frames in a row fusing at most half their arrivals, 0: never (sonar --reacquire-after)"},
   {"gate_truncation_covariance", Type::kBool, 0, false, 0, false,
-   [](const UnderwaterTrackerParams& p) { return p.gate_truncation_covariance ? 1.0 : 0.0; },
-   [](UnderwaterTrackerParams& p, double v) { p.gate_truncation_covariance = v == 1.0; },
-   "widen P for channels the per-channel gate dropped (uw --no-gate-truncation turns it off)"},
+   [](const SonarTrackerParams& p) { return p.gate_truncation_covariance ? 1.0 : 0.0; },
+   [](SonarTrackerParams& p, double v) { p.gate_truncation_covariance = v == 1.0; },
+   "widen P for channels the per-channel gate dropped (sonar --no-gate-truncation turns it off)"},
   {"project_depth", Type::kBool, 0, false, 0, false,
-   [](const UnderwaterTrackerParams& p) { return p.project_depth ? 1.0 : 0.0; },
-   [](UnderwaterTrackerParams& p, double v) { p.project_depth = v == 1.0; },
-   "keep the depth estimate within (0, D) (uw --no-depth-projection turns it off)"},
+   [](const SonarTrackerParams& p) { return p.project_depth ? 1.0 : 0.0; },
+   [](SonarTrackerParams& p, double v) { p.project_depth = v == 1.0; },
+   "keep the depth estimate within (0, D) (sonar --no-depth-projection turns it off)"},
 };
 // clang-format on
 
@@ -266,8 +266,8 @@ void apply_pcl_settings(std::span<const Setting> settings, PclTrackerParams& par
   params = p;
 }
 
-void apply_uw_settings(std::span<const Setting> settings, UnderwaterTrackerParams& params) {
-  apply(settings, params, kUwKeys, "underwater");
+void apply_sonar_settings(std::span<const Setting> settings, SonarTrackerParams& params) {
+  apply(settings, params, kSonarKeys, "sonar");
 }
 
 namespace {
@@ -275,7 +275,7 @@ namespace {
 const char* tracker_name(hal::FrameKind kind) {
   switch (kind) {
     case hal::FrameKind::kPcl: return "PCL";
-    case hal::FrameKind::kSonar: return "underwater";
+    case hal::FrameKind::kSonar: return "sonar";
     default: return "radar";
   }
 }
@@ -288,7 +288,7 @@ bool tracker_takes(hal::FrameKind kind, const std::string& key) {
       }
       return false;
     case hal::FrameKind::kSonar:
-      for (const auto& k : kUwKeys) {
+      for (const auto& k : kSonarKeys) {
         if (key == k.key) return true;
       }
       return false;
@@ -337,14 +337,14 @@ void check_settings_kind(std::span<const Setting> settings, hal::FrameKind kind,
 }
 
 std::map<std::string, double> pcl_parameters(const PclTrackerParams& params) { return values(params, kPclKeys); }
-std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& params) { return values(params, kUwKeys); }
+std::map<std::string, double> sonar_parameters(const SonarTrackerParams& params) { return values(params, kSonarKeys); }
 
 std::vector<SettingInfo> pcl_setting_table() {
   return table(pcl_params_for(pcl002_config()), kPclKeys, "pcl002");
 }
 
-std::vector<SettingInfo> uw_setting_table() {
-  return table(uw_params_for(uw003_config()), kUwKeys, "uw003");
+std::vector<SettingInfo> sonar_setting_table() {
+  return table(sonar_params_for(uw003_config()), kSonarKeys, "uw003");
 }
 
 }  // namespace kestrel::sim

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The PCL and underwater trackers' parameters by name: the keys `--set
+// The PCL and sonar trackers' parameters by name: the keys `--set
 // KEY=VALUE` and `--config FILE` take on `run -s pcl002|uw003...`, `pcl`
-// and `uw` (docs/parameters.md, "PCL tracker" and "Underwater tracker").
+// and `sonar` (docs/parameters.md, "PCL tracker" and "Sonar tracker").
 // As for the radar keys (filters/settings.hpp), one table per tracker maps
 // each key to its field, range and meaning, so the parser, the range check,
 // the echo into the summary and `list --settings` cannot drift apart.
@@ -15,7 +15,7 @@
 #include "filters/settings.hpp"
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/tracking/pcl_tracker.hpp"
-#include "kestrel/tracking/underwater_tracker.hpp"
+#include "kestrel/tracking/sonar_tracker.hpp"
 
 namespace kestrel::sim {
 
@@ -24,13 +24,13 @@ namespace kestrel::sim {
 /// a value outside its range or confirm_m > confirm_n; `params` is then
 /// unchanged.
 void apply_pcl_settings(std::span<const Setting> settings, PclTrackerParams& params);
-void apply_uw_settings(std::span<const Setting> settings, UnderwaterTrackerParams& params);
+void apply_sonar_settings(std::span<const Setting> settings, SonarTrackerParams& params);
 
 /// Every key with its value in `params`, for the summary's "parameters".
 std::map<std::string, double> pcl_parameters(const PclTrackerParams& params);
-std::map<std::string, double> uw_parameters(const UnderwaterTrackerParams& params);
+std::map<std::string, double> sonar_parameters(const SonarTrackerParams& params);
 
-/// The trackers that take `key` ("radar tracker", "PCL and underwater
+/// The trackers that take `key` ("radar tracker", "PCL and sonar
 /// trackers"), or "" when none does: what an unknown-key error names.
 std::string trackers_taking(const std::string& key);
 
@@ -40,7 +40,7 @@ GateProbability gate_option(double p, const char* option);
 
 /// Throws std::invalid_argument unless every setting is a key of the
 /// tracker of `kind`'s frames (the radar keys of setting_table(), the PCL
-/// or the underwater tracker's), naming the key, where it was given, the
+/// or the sonar tracker's), naming the key, where it was given, the
 /// tracker it belongs to if any, `what` (e.g. "FILE holds PCL frames") and
 /// `list --settings`. For `replay`, which learns the kind from its input:
 /// a key of another tracker is refused as such, never applied or ignored.
@@ -49,6 +49,6 @@ void check_settings_kind(std::span<const Setting> settings, hal::FrameKind kind,
 /// Every key, its default (for the keys a scenario sets, "the scenario's"
 /// with pcl002's / uw003's value), range and meaning, in docs order.
 std::vector<SettingInfo> pcl_setting_table();
-std::vector<SettingInfo> uw_setting_table();
+std::vector<SettingInfo> sonar_setting_table();
 
 }  // namespace kestrel::sim

@@ -106,29 +106,29 @@ PclReplayScore score_pcl_replay(const PclRunOutput& out, const std::vector<PclTr
   return score;
 }
 
-UwReplayScore score_uw_replay(const UwRunOutput& out, const std::vector<UwTruthRow>& truth) {
+SonarReplayScore score_sonar_replay(const SonarRunOutput& out, const std::vector<SonarTruthRow>& truth) {
   const auto by_time = index_by_time(truth);
-  UwReplayScore score;
-  UwScenarioRun run;
-  UwRunOutput scored;
+  SonarReplayScore score;
+  SonarScenarioRun run;
+  SonarRunOutput scored;
   scored.stats = out.stats;
-  for (const UwFrameOutcome& f : out.frames) {
+  for (const SonarFrameOutcome& f : out.frames) {
     if (!f.stepped) {
       ++score.match.without_time;
       continue;
     }
-    const UwTruthRow* row = row_at(by_time, truth, f.t_s);
+    const SonarTruthRow* row = row_at(by_time, truth, f.t_s);
     if (row == nullptr) {
       ++score.match.without_truth;
       continue;
     }
     ++score.match.matched;
     run.truth.push_back(row->truth);
-    UwFrameRecord rec;
+    SonarFrameRecord rec;
     // The scorer reads each arrival's channel and outlier flag only.
     for (std::uint32_t bit = 0; bit < 32; ++bit) {
       if ((row->channels & (1u << bit)) == 0) continue;
-      UwArrivalRecord a;
+      SonarArrivalRecord a;
       a.beacon = static_cast<std::uint8_t>(bit / 2);
       a.path = static_cast<hal::ToaPath>(bit % 2);
       a.outlier = (row->outlier_channels & (1u << bit)) != 0;
@@ -137,7 +137,7 @@ UwReplayScore score_uw_replay(const UwRunOutput& out, const std::vector<UwTruthR
     run.frames.push_back(rec);
     scored.frames.push_back(f);
   }
-  score.metrics = score_uw_run(run, scored);
+  score.metrics = score_sonar_run(run, scored);
   return score;
 }
 

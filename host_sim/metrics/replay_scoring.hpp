@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Scoring a replayed PCL or sonar stream against its truth CSV
 // (csv/sensor_truth_csv.hpp) with the kind's own scorer, the one `pcl` and
-// `uw` use (metrics/pcl_metrics.hpp, metrics/uw_metrics.hpp). A frame is
+// `sonar` use (metrics/pcl_metrics.hpp, metrics/sonar_metrics.hpp). A frame is
 // matched to the truth row at its wire time, to the microsecond, as a radar
 // replay matches its truth; frames that did not reach the tracker (no time)
 // or have no truth row are left out of the scored sequence and counted. On
@@ -14,9 +14,9 @@
 
 #include "csv/sensor_truth_csv.hpp"
 #include "metrics/pcl_metrics.hpp"
-#include "metrics/uw_metrics.hpp"
+#include "metrics/sonar_metrics.hpp"
 #include "montecarlo/pcl_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 
 namespace kestrel::sim {
 
@@ -43,10 +43,10 @@ struct PclReplayScore {
 PclReplayScore score_pcl_replay(const PclRunOutput& out, const std::vector<PclTruthRow>& truth,
                                 const PclTolerance& tolerance);
 
-struct UwReplayScore {
-  UwRunMetrics metrics;
+struct SonarReplayScore {
+  SonarRunMetrics metrics;
   TruthMatch match;
 };
-UwReplayScore score_uw_replay(const UwRunOutput& out, const std::vector<UwTruthRow>& truth);
+SonarReplayScore score_sonar_replay(const SonarRunOutput& out, const std::vector<SonarTruthRow>& truth);
 
 }  // namespace kestrel::sim

@@ -98,20 +98,20 @@ void pcl_section(std::ostream& out, const std::filesystem::path& root, const Mai
   figures(out, r.pcl_figures);
 }
 
-void uw_section(std::ostream& out, const std::filesystem::path& root, const MainReport& r) {
-  const nlohmann::json j = read_json(root / r.uw_dir / "uw_summary.json");
+void sonar_section(std::ostream& out, const std::filesystem::path& root, const MainReport& r) {
+  const nlohmann::json j = read_json(root / r.sonar_dir / "sonar_summary.json");
   out << "## Paper 003: underwater multipath TOA tracking (UW-003)\n\n"
       << "\"A Study on Real-time Target Tracking Algorithm for Multipath Underwater Acoustic Signals Using "
          "Extended Kalman Filter\". "
       << j["runs"].get<std::size_t>() << " runs of " << j["scenario"]["name"].get<std::string>()
-      << " with the default gate (docs/underwater.md).\n\n"
+      << " with the default gate (docs/sonar.md).\n\n"
       << "| 3D RMSE m | horizontal RMSE m | depth RMSE m | peak 3D m | NEES | re-initialisations |\n"
       << "|---|---|---|---|---|---|\n"
       << "| " << interval(j, "rmse_3d_m", "%.2f") << " | " << interval(j, "rmse_h_m", "%.2f") << " | "
       << interval(j, "rmse_depth_m", "%.2f") << " | " << interval(j, "peak_3d_m", "%.1f") << " | "
       << interval(j, "nees", "%.2f") << " | " << j["reinitialisations"].dump() << " |\n\n"
-      << "Files: `" << r.uw_dir << "/uw_{runs,steps,truth,arrivals,track}.csv`, `uw_summary.json`.\n\n";
-  figures(out, r.uw_figures);
+      << "Files: `" << r.sonar_dir << "/sonar_{runs,steps,truth,arrivals,track}.csv`, `sonar_summary.json`.\n\n";
+  figures(out, r.sonar_figures);
 }
 
 }  // namespace
@@ -129,12 +129,12 @@ void write_main_report(const std::filesystem::path& path, const std::filesystem:
   if (!r.pcl_dir.empty()) {
     out << "- [Paper 002: PCL-002](#paper-002-passive-bistatic-radar-range-and-range-rate-tracking-pcl-002)\n";
   }
-  if (!r.uw_dir.empty()) out << "- [Paper 003: UW-003](#paper-003-underwater-multipath-toa-tracking-uw-003)\n";
+  if (!r.sonar_dir.empty()) out << "- [Paper 003: UW-003](#paper-003-underwater-multipath-toa-tracking-uw-003)\n";
   out << "\n";
   if (!r.radar.empty()) radar_section(out, r);
   if (!r.mc001_dir.empty()) mc001_section(out, root, r);
   if (!r.pcl_dir.empty()) pcl_section(out, root, r);
-  if (!r.uw_dir.empty()) uw_section(out, root, r);
+  if (!r.sonar_dir.empty()) sonar_section(out, root, r);
 
   std::ofstream file(path);
   file << out.str();

@@ -30,12 +30,12 @@ struct MainReport {
   std::vector<std::filesystem::path> mc001_figures;
   std::string pcl_dir;
   std::vector<std::filesystem::path> pcl_figures;
-  std::string uw_dir;
-  std::vector<std::filesystem::path> uw_figures;
+  std::string sonar_dir;
+  std::vector<std::filesystem::path> sonar_figures;
 };
 
 /// Write `path` (markdown) from `report` and the summaries the parts wrote
-/// under `root` (pcl_summary.json, uw_summary.json, mc001_table.md).
+/// under `root` (pcl_summary.json, sonar_summary.json, mc001_table.md).
 void write_main_report(const std::filesystem::path& path, const std::filesystem::path& root,
                        const MainReport& report);
 

@@ -38,7 +38,7 @@ const char* sensor_kind_name(hal::FrameKind kind) {
 std::vector<std::string> scenario_names_of_kind(hal::FrameKind kind) {
   switch (kind) {
     case hal::FrameKind::kPcl: return pcl_scenario_names();
-    case hal::FrameKind::kSonar: return uw_scenario_names();
+    case hal::FrameKind::kSonar: return sonar_scenario_names();
     case hal::FrameKind::kRadar: break;
   }
   std::vector<std::string> names;

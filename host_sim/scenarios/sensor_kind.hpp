@@ -18,7 +18,7 @@ namespace kestrel::sim {
 /// The `-f` names of the one tracker each non-radar kind has (radar has
 /// the filter registry).
 inline constexpr std::string_view kPclFilterName = "pcl-kf";
-inline constexpr std::string_view kSonarFilterName = "uw-ekf";
+inline constexpr std::string_view kSonarFilterName = "sonar-ekf";
 
 /// "radar", "PCL" or "sonar".
 const char* sensor_kind_name(hal::FrameKind kind);

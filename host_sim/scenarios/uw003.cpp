@@ -17,7 +17,7 @@ std::string lower(std::string s) {
   return s;
 }
 
-double path_length(const UwTruth& t, const std::array<double, 3>& b, hal::ToaPath path, double seabed_m) {
+double path_length(const SonarTruth& t, const std::array<double, 3>& b, hal::ToaPath path, double seabed_m) {
   const double z = path == hal::ToaPath::kDirect ? t.z_m : 2.0 * seabed_m - t.z_m;
   const double dx = t.x_m - b[0];
   const double dy = t.y_m - b[1];
@@ -27,20 +27,20 @@ double path_length(const UwTruth& t, const std::array<double, 3>& b, hal::ToaPat
 
 }  // namespace
 
-UwScenarioConfig uw003_config() {
-  UwScenarioConfig c;
+SonarScenarioConfig uw003_config() {
+  SonarScenarioConfig c;
   c.name = "uw003";
   c.description = "UW-003: 4 surface beacons, seabed 150 m, direct + reflected TOA, 3 ms, 5 % outliers";
   return c;
 }
 
-std::vector<std::string> uw_scenario_names() {
+std::vector<std::string> sonar_scenario_names() {
   return {"uw003", "uw003-direct", "uw003-clean", "uw003-d100", "uw003-1ms"};
 }
 
-UwScenarioConfig uw_config_by_name(const std::string& name) {
+SonarScenarioConfig sonar_config_by_name(const std::string& name) {
   const std::string n = lower(name);
-  UwScenarioConfig c = uw003_config();
+  SonarScenarioConfig c = uw003_config();
   if (n == "uw003") return c;
   c.name = n;
   if (n == "uw003-direct") {
@@ -62,13 +62,13 @@ UwScenarioConfig uw_config_by_name(const std::string& name) {
   return c;
 }
 
-UwScenarioRun generate_uw(const UwScenarioConfig& cfg, std::uint64_t seed) {
-  if (cfg.beacons_m.empty() || cfg.beacons_m.size() * 2 > hal::kMaxToaArrivals) {
+SonarScenarioRun generate_sonar(const SonarScenarioConfig& cfg, std::uint64_t seed) {
+  if (cfg.beacons_m.empty() || cfg.beacons_m.size() * 2 > hal::kMaxSonarArrivals) {
     throw std::invalid_argument("UW scenario: 1..8 beacons");
   }
   Rng rng(seed);
-  UwScenarioRun run;
-  UwTruth s;
+  SonarScenarioRun run;
+  SonarTruth s;
   s.x_m = cfg.start_m[0];
   s.y_m = cfg.start_m[1];
   s.z_m = cfg.start_m[2];
@@ -103,7 +103,7 @@ UwScenarioRun generate_uw(const UwScenarioConfig& cfg, std::uint64_t seed) {
     s.t_s = static_cast<double>(k) * T;
     run.truth.push_back(s);
 
-    UwFrameRecord f;
+    SonarFrameRecord f;
     f.wire.kind = hal::FrameKind::kSonar;
     f.wire.t_us = std::llround(s.t_s * 1e6);
     f.wire.count = 0;
@@ -113,7 +113,7 @@ UwScenarioRun generate_uw(const UwScenarioConfig& cfg, std::uint64_t seed) {
         const double coin = rng.uniform();
         const double delay = rng.uniform(cfg.outlier_min_s, cfg.outlier_max_s);
         if (path == hal::ToaPath::kReflected && !cfg.reflected) continue;
-        UwArrivalRecord a;
+        SonarArrivalRecord a;
         a.beacon = static_cast<std::uint8_t>(b);
         a.path = path;
         a.true_toa_s = path_length(s, cfg.beacons_m[b], path, cfg.seabed_depth_m) / s.c_mps;
@@ -121,7 +121,7 @@ UwScenarioRun generate_uw(const UwScenarioConfig& cfg, std::uint64_t seed) {
         a.outlier_s = a.outlier ? delay : 0.0;
         a.toa_s = a.true_toa_s + noise + a.outlier_s;
         const double ns = std::round(a.toa_s * 1e9);
-        hal::ToaArrival& w = f.wire.sonar[f.wire.count++];
+        hal::SonarArrival& w = f.wire.sonar[f.wire.count++];
         w.time_of_flight_ns = static_cast<std::uint32_t>(std::clamp(ns, 0.0, 4294967295.0));
         w.beacon_id = a.beacon;
         w.path = path;

@@ -6,7 +6,7 @@
 // outliers. Variants (uw003-direct, -clean, -d100, -1ms) make every draw in
 // the same order, so with one seed they share truth and noise and differ
 // only in what they change. The numbers and the choices the paper leaves
-// open are in docs/scenarios.md and docs/underwater.md, "Scenario choices
+// open are in docs/scenarios.md and docs/sonar.md, "Scenario choices
 // the paper leaves open".
 #pragma once
 
@@ -20,7 +20,7 @@
 
 namespace kestrel::sim {
 
-struct UwScenarioConfig {
+struct SonarScenarioConfig {
   std::string name;                  ///< "uw003", "uw003-direct", ...
   std::string description;           ///< One line for listings.
   double period_s = 1.0;             ///< T, s.
@@ -41,15 +41,15 @@ struct UwScenarioConfig {
 };
 
 /// UW-003 and its variants (docs/scenarios.md).
-UwScenarioConfig uw003_config();
+SonarScenarioConfig uw003_config();
 /// By name: uw003, uw003-direct, uw003-clean, uw003-d100, uw003-1ms
 /// (case-insensitive). Throws std::invalid_argument.
-UwScenarioConfig uw_config_by_name(const std::string& name);
+SonarScenarioConfig sonar_config_by_name(const std::string& name);
 /// Every UW scenario name, uw003 first.
-std::vector<std::string> uw_scenario_names();
+std::vector<std::string> sonar_scenario_names();
 
 /// The target and the medium at one frame time.
-struct UwTruth {
+struct SonarTruth {
   double t_s = 0.0;                                  ///< Ping time, s.
   double x_m = 0.0, y_m = 0.0, z_m = 0.0;            ///< Position; z is depth, positive down, m.
   double vx_mps = 0.0, vy_mps = 0.0, vz_mps = 0.0;   ///< Velocity, m/s.
@@ -57,7 +57,7 @@ struct UwTruth {
 };
 
 /// One arrival as generated (before quantisation), for scoring.
-struct UwArrivalRecord {
+struct SonarArrivalRecord {
   std::uint8_t beacon = 0;
   hal::ToaPath path = hal::ToaPath::kDirect;
   double true_toa_s = 0.0;   ///< Noise-free travel time, s.
@@ -66,18 +66,18 @@ struct UwArrivalRecord {
   double outlier_s = 0.0;    ///< That delay, s.
 };
 
-struct UwFrameRecord {
+struct SonarFrameRecord {
   hal::Frame wire{};                      ///< Quantised frame (arrivals in the order of `arrivals`).
-  std::vector<UwArrivalRecord> arrivals;  ///< Same order as wire.sonar.
+  std::vector<SonarArrivalRecord> arrivals;  ///< Same order as wire.sonar.
 };
 
-struct UwScenarioRun {
-  std::vector<UwTruth> truth;        ///< truth[k] at frames[k].
-  std::vector<UwFrameRecord> frames;
+struct SonarScenarioRun {
+  std::vector<SonarTruth> truth;        ///< truth[k] at frames[k].
+  std::vector<SonarFrameRecord> frames;
   std::size_t depth_reflections = 0; ///< Times the target was turned back into the water.
 };
 
 /// Truth and frames of the run with this seed (bit-reproducible).
-UwScenarioRun generate_uw(const UwScenarioConfig& config, std::uint64_t seed);
+SonarScenarioRun generate_sonar(const SonarScenarioConfig& config, std::uint64_t seed);
 
 }  // namespace kestrel::sim

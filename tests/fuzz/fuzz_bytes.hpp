@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Reading fuzz input bytes as a stream of frames, shared by the tracker
 // fuzz harnesses (radar_tracker_invariants.hpp, pcl_tracker_invariants.hpp,
-// underwater_tracker_invariants.hpp): a reader that yields zeros once the
+// sonar_tracker_invariants.hpp): a reader that yields zeros once the
 // bytes are used up, so every input is a valid stream, and the time step
 // that opens every frame, and a tally of what a run met.
 #pragma once

@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Writes the seed corpora of the PCL and underwater tracker fuzzers
-(tests/fuzz/corpus/pcl_tracker/, tests/fuzz/corpus/underwater_tracker/) in
+"""Writes the seed corpora of the PCL and sonar tracker fuzzers
+(tests/fuzz/corpus/pcl_tracker/, tests/fuzz/corpus/sonar_tracker/) in
 the byte format of pcl_tracker_invariants.hpp and
-underwater_tracker_invariants.hpp. Run from the repository root:
+sonar_tracker_invariants.hpp. Run from the repository root:
     python3 tests/fuzz/make_tracker_seeds.py
 """
 import os
@@ -84,47 +84,47 @@ def pcl_seeds():
 # arrival, bit 0 clear = target (noise bits 1-5, bits 6-7 = 11 late by 40 ms);
 # bit 0 set = raw u32 ns, beacon bits 4-6 (or a raw u8 with bit 7), path
 # code bits 1-3 (6-7 not a path).
-def uw_target(rng, late=False):
+def sonar_target(rng, late=False):
     return bytes([(rng.randrange(32) << 1) | ((3 if late else rng.randrange(3)) << 6)])
 
 
-def uw_raw(ns, beacon, code):
+def sonar_raw(ns, beacon, code):
     if beacon < 8:
         return bytes([1 | (code << 1) | (beacon << 4)]) + struct.pack("<I", ns)
     return bytes([1 | (code << 1) | 0x80]) + struct.pack("<IB", ns, beacon)
 
 
-def uw_tracking(rng, n, count=8):
-    return [frame(PERIOD, count, [uw_target(rng) for _ in range(count)], high=rng.randrange(4)) for _ in range(n)]
+def sonar_tracking(rng, n, count=8):
+    return [frame(PERIOD, count, [sonar_target(rng) for _ in range(count)], high=rng.randrange(4)) for _ in range(n)]
 
 
-def uw_seeds():
+def sonar_seeds():
     rng = random.Random(2027)
     seeds = {}
-    seeds["normal_tracking"] = uw_tracking(rng, 20)
-    seeds["direct_only_and_partial"] = (uw_tracking(rng, 3) + uw_tracking(rng, 6, count=4) +
-                                        uw_tracking(rng, 6, count=5) + uw_tracking(rng, 6, count=2))
-    seeds["outliers"] = uw_tracking(rng, 3) + [
-        frame(PERIOD, 8, [uw_target(rng, late=(k in (1, 6))) for k in range(8)]) for _ in range(6)] + [
-        frame(PERIOD, 8, [uw_target(rng, late=True) for _ in range(8)]) for _ in range(4)] + uw_tracking(rng, 5)
-    seeds["dropouts"] = (uw_tracking(rng, 5) + [frame(PERIOD, 0, [])] * 4 + uw_tracking(rng, 3) +
-                         [frame(GAP_MS, 8, [uw_target(rng) for _ in range(8)], 59000)] + uw_tracking(rng, 2) +
-                         [frame(GAP_MS, 8, [uw_target(rng) for _ in range(8)], 120000)] + uw_tracking(rng, 4))
-    seeds["step_back"] = (uw_tracking(rng, 8) + [frame(SIGNED_MS, 8, [uw_target(rng) for _ in range(8)], -1500)] +
-                          [frame(SIGNED_MS, 8, [uw_target(rng) for _ in range(8)], 0)] + uw_tracking(rng, 5))
-    seeds["far_future_frame"] = (uw_tracking(rng, 8) +
-                                 [frame(ABSOLUTE_US, 8, [uw_target(rng) for _ in range(8)], 2**63 - 1)] +
-                                 uw_tracking(rng, 3) + [frame(ABSOLUTE_US, 8, [uw_target(rng) for _ in range(8)], -(2**63))])
-    seeds["too_many_arrivals"] = uw_tracking(rng, 4) + uw_tracking(rng, 8, count=15) + [
-        frame(PERIOD, 12, [uw_target(rng) for _ in range(8)] + [uw_raw(7, 9, 7)] * 4)]
-    seeds["extreme_values"] = uw_tracking(rng, 6) + [
-        frame(PERIOD, 2, [uw_target(rng), uw_raw(0, 3, 1)]),
-        frame(PERIOD, 2, [uw_target(rng), uw_raw(0xFFFFFFFF, 1, 1)]),
-        frame(PERIOD, 2, [uw_target(rng), uw_raw(1, 255, 0)]),
-        frame(PERIOD, 2, [uw_target(rng), uw_raw(500000000, 5, 0)]),
-        frame(PERIOD, 2, [uw_target(rng), uw_raw(500000000, 2, 7)]),
-        frame(PERIOD, 5, [uw_raw(1, b, 0) for b in range(4)] + [uw_raw(1, 0, 1)]),
-        frame(PERIOD, 8, [uw_target(rng) for _ in range(7)] + [uw_raw(1333333, 3, 1)])] + uw_tracking(rng, 6)
+    seeds["normal_tracking"] = sonar_tracking(rng, 20)
+    seeds["direct_only_and_partial"] = (sonar_tracking(rng, 3) + sonar_tracking(rng, 6, count=4) +
+                                        sonar_tracking(rng, 6, count=5) + sonar_tracking(rng, 6, count=2))
+    seeds["outliers"] = sonar_tracking(rng, 3) + [
+        frame(PERIOD, 8, [sonar_target(rng, late=(k in (1, 6))) for k in range(8)]) for _ in range(6)] + [
+        frame(PERIOD, 8, [sonar_target(rng, late=True) for _ in range(8)]) for _ in range(4)] + sonar_tracking(rng, 5)
+    seeds["dropouts"] = (sonar_tracking(rng, 5) + [frame(PERIOD, 0, [])] * 4 + sonar_tracking(rng, 3) +
+                         [frame(GAP_MS, 8, [sonar_target(rng) for _ in range(8)], 59000)] + sonar_tracking(rng, 2) +
+                         [frame(GAP_MS, 8, [sonar_target(rng) for _ in range(8)], 120000)] + sonar_tracking(rng, 4))
+    seeds["step_back"] = (sonar_tracking(rng, 8) + [frame(SIGNED_MS, 8, [sonar_target(rng) for _ in range(8)], -1500)] +
+                          [frame(SIGNED_MS, 8, [sonar_target(rng) for _ in range(8)], 0)] + sonar_tracking(rng, 5))
+    seeds["far_future_frame"] = (sonar_tracking(rng, 8) +
+                                 [frame(ABSOLUTE_US, 8, [sonar_target(rng) for _ in range(8)], 2**63 - 1)] +
+                                 sonar_tracking(rng, 3) + [frame(ABSOLUTE_US, 8, [sonar_target(rng) for _ in range(8)], -(2**63))])
+    seeds["too_many_arrivals"] = sonar_tracking(rng, 4) + sonar_tracking(rng, 8, count=15) + [
+        frame(PERIOD, 12, [sonar_target(rng) for _ in range(8)] + [sonar_raw(7, 9, 7)] * 4)]
+    seeds["extreme_values"] = sonar_tracking(rng, 6) + [
+        frame(PERIOD, 2, [sonar_target(rng), sonar_raw(0, 3, 1)]),
+        frame(PERIOD, 2, [sonar_target(rng), sonar_raw(0xFFFFFFFF, 1, 1)]),
+        frame(PERIOD, 2, [sonar_target(rng), sonar_raw(1, 255, 0)]),
+        frame(PERIOD, 2, [sonar_target(rng), sonar_raw(500000000, 5, 0)]),
+        frame(PERIOD, 2, [sonar_target(rng), sonar_raw(500000000, 2, 7)]),
+        frame(PERIOD, 5, [sonar_raw(1, b, 0) for b in range(4)] + [sonar_raw(1, 0, 1)]),
+        frame(PERIOD, 8, [sonar_target(rng) for _ in range(7)] + [sonar_raw(1333333, 3, 1)])] + sonar_tracking(rng, 6)
     return seeds
 
 
@@ -138,4 +138,4 @@ def write(name, seeds):
 
 if __name__ == "__main__":
     write("pcl_tracker", pcl_seeds())
-    write("underwater_tracker", uw_seeds())
+    write("sonar_tracker", sonar_seeds())

@@ -191,7 +191,7 @@ SCENARIO("a damaged frame is dropped whole and the next one decodes", "[hal][ass
   }
   GIVEN("an over-capacity frame between two good ones") {
     std::mt19937 rng(4);
-    const Frame head = kestrel::test::random_frame(rng, FrameKind::kSonar, kestrel::hal::kMaxToaArrivals);
+    const Frame head = kestrel::test::random_frame(rng, FrameKind::kSonar, kestrel::hal::kMaxSonarArrivals);
     const Frame extra = kestrel::test::random_frame(rng, FrameKind::kSonar, 3);
     kestrel::test::WireBuilder over(FrameKind::kSonar, head.t_us);
     over.items(head).items(extra);

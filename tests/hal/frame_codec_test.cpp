@@ -70,7 +70,7 @@ SCENARIO("the layout constants are the documented ones", "[hal][codec]") {
   STATIC_REQUIRE(wire::kMaxFrameBytes == 4108);
   STATIC_REQUIRE(wire::kMaxEncodedFrameBytes == 796);
   STATIC_REQUIRE(wire::frame_size(FrameKind::kRadar, kestrel::hal::kMaxRadarPlots) == 540);
-  STATIC_REQUIRE(wire::frame_size(FrameKind::kSonar, kestrel::hal::kMaxToaArrivals) == 156);
+  STATIC_REQUIRE(wire::frame_size(FrameKind::kSonar, kestrel::hal::kMaxSonarArrivals) == 156);
   STATIC_REQUIRE(wire::record_size(FrameKind::kRadar) == 16);
   STATIC_REQUIRE(wire::record_size(FrameKind::kSonar) == 8);
   STATIC_REQUIRE(wire::record_size(FrameKind::kPcl) == 12);
@@ -464,7 +464,7 @@ SCENARIO("encode refuses what it cannot write", "[hal][codec]") {
   GIVEN("frames over capacity or of an unknown kind") {
     Frame over{};
     over.kind = FrameKind::kSonar;
-    over.count = kestrel::hal::kMaxToaArrivals + 1;
+    over.count = kestrel::hal::kMaxSonarArrivals + 1;
     Frame unknown{};
     unknown.kind = static_cast<FrameKind>(9);
     std::array<std::uint8_t, wire::kMaxFrameBytes> buf{};

@@ -29,8 +29,8 @@ inline hal::RadarPlot random_radar_plot(std::mt19937& rng) {
                         random_int<std::int32_t>(rng),  random_int<std::int16_t>(rng),
                         static_cast<std::uint8_t>(rng() & 1u), random_int<std::uint8_t>(rng)};
 }
-inline hal::ToaArrival random_toa_arrival(std::mt19937& rng) {
-  return hal::ToaArrival{random_int<std::uint32_t>(rng), random_int<std::uint8_t>(rng),
+inline hal::SonarArrival random_sonar_arrival(std::mt19937& rng) {
+  return hal::SonarArrival{random_int<std::uint32_t>(rng), random_int<std::uint8_t>(rng),
                          (rng() & 1u) != 0 ? hal::ToaPath::kReflected : hal::ToaPath::kDirect};
 }
 inline hal::PclCandidate random_pcl_candidate(std::mt19937& rng) {
@@ -47,7 +47,7 @@ inline hal::Frame random_frame(std::mt19937& rng, hal::FrameKind kind, std::size
   for (std::size_t i = 0; i < count; ++i) {
     switch (kind) {
       case hal::FrameKind::kRadar: f.radar[i] = random_radar_plot(rng); break;
-      case hal::FrameKind::kSonar: f.sonar[i] = random_toa_arrival(rng); break;
+      case hal::FrameKind::kSonar: f.sonar[i] = random_sonar_arrival(rng); break;
       case hal::FrameKind::kPcl: f.pcl[i] = random_pcl_candidate(rng); break;
     }
   }
@@ -74,8 +74,8 @@ inline bool frames_equal(const hal::Frame& a, const hal::Frame& b) {
         break;
       }
       case hal::FrameKind::kSonar: {
-        const hal::ToaArrival& p = a.sonar[i];
-        const hal::ToaArrival& q = b.sonar[i];
+        const hal::SonarArrival& p = a.sonar[i];
+        const hal::SonarArrival& q = b.sonar[i];
         if (p.time_of_flight_ns != q.time_of_flight_ns || p.beacon_id != q.beacon_id || p.path != q.path) {
           return false;
         }

@@ -57,7 +57,7 @@ class WireBuilder {
     ++records_count_;
     return *this;
   }
-  WireBuilder& sonar(const hal::ToaArrival& a) {
+  WireBuilder& sonar(const hal::SonarArrival& a) {
     return sonar(a.time_of_flight_ns, a.beacon_id, static_cast<std::uint8_t>(a.path));
   }
 

@@ -51,12 +51,12 @@ if(CHECK STREQUAL "replay_wrong_kind")
   expect_replay_error(r6 "--scenario pcl002: .*s1.kstr holds radar frames" --stream ${OUT}/s1.kstr -s pcl002)
 elseif(CHECK STREQUAL "replay_settings")
   # replay of a PCL (sonar) stream reads --config and then --set with the
-  # PCL (underwater) tracker's keys: they change the run and summary.json
+  # PCL (sonar) tracker's keys: they change the run and summary.json
   # echoes them. A key of another tracker is refused naming it, the
   # stream's kind and `list --settings`, with nothing written; a radar
   # stream keeps the radar keys.
   generate_stream(pcl002 pcl)
-  generate_stream(uw003 uw)
+  generate_stream(uw003 sonar)
   execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
   function(replay_ok dir)
     execute_process(COMMAND ${SIM} replay ${ARGN} --no-plots --out ${OUT}/${dir}
@@ -96,17 +96,17 @@ elseif(CHECK STREQUAL "replay_settings")
                         "${default_rows} -> ${rows}, first confirmation ${default_confirm} -> ${confirm} s")
   endif()
 
-  replay_ok(uw_default --stream ${OUT}/uw.kstr)
-  replay_ok(uw_set --stream ${OUT}/uw.kstr --set per_channel_gate=false)
-  string(JSON gate GET "${summary}" results replay uw-ekf parameters per_channel_gate)
-  string(JSON tracker_gate GET "${summary}" results replay uw-ekf tracker per_channel_gate)
+  replay_ok(sonar_default --stream ${OUT}/sonar.kstr)
+  replay_ok(sonar_set --stream ${OUT}/sonar.kstr --set per_channel_gate=false)
+  string(JSON gate GET "${summary}" results replay sonar-ekf parameters per_channel_gate)
+  string(JSON tracker_gate GET "${summary}" results replay sonar-ekf tracker per_channel_gate)
   if(NOT gate EQUAL 0 OR (NOT tracker_gate STREQUAL "OFF" AND NOT tracker_gate STREQUAL "false"))
     message(FATAL_ERROR "summary.json per_channel_gate: parameters ${gate}, tracker ${tracker_gate}")
   endif()
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/uw_default/uw_track.csv ${OUT}/uw_set/uw_track.csv
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/sonar_default/sonar_track.csv ${OUT}/sonar_set/sonar_track.csv
                   RESULT_VARIABLE rc)
   if(rc EQUAL 0)
-    message(FATAL_ERROR "per_channel_gate=false did not change uw_track.csv")
+    message(FATAL_ERROR "per_channel_gate=false did not change sonar_track.csv")
   endif()
 
   # A radar stream still takes the radar keys.
@@ -122,8 +122,8 @@ elseif(CHECK STREQUAL "replay_settings")
                       --stream ${OUT}/pcl.kstr --set confirm_m=3 --set qj=5)
   expect_replay_error(e2 "--config [^ ]*radar.json: gate_d2=13.8: 'gate_d2' is not a key of the PCL tracker"
                       --stream ${OUT}/pcl.kstr --config ${OUT}/radar.json)
-  expect_replay_error(e3 "--set confirm_m=3: 'confirm_m' is not a key of the underwater tracker \\([^)]*uw.kstr holds sonar frames\\); it is a key of the radar and PCL trackers. ${keys}"
-                      --stream ${OUT}/uw.kstr --set confirm_m=3)
+  expect_replay_error(e3 "--set confirm_m=3: 'confirm_m' is not a key of the sonar tracker \\([^)]*sonar.kstr holds sonar frames\\); it is a key of the radar and PCL trackers. ${keys}"
+                      --stream ${OUT}/sonar.kstr --set confirm_m=3)
   expect_replay_error(e4 "--set sigma_rb_m=12: 'sigma_rb_m' is not a key of the radar tracker \\([^)]*s1.kstr holds radar frames\\); it is a key of the PCL tracker"
                       --stream ${OUT}/s1.kstr --set sigma_rb_m=12)
   expect_replay_error(e5 "--set confirm_m=9: out of range \\(whole, 1..8\\)" --stream ${OUT}/pcl.kstr --set confirm_m=9)
@@ -135,15 +135,15 @@ elseif(CHECK STREQUAL "replay_settings")
 elseif(CHECK STREQUAL "replay_mixed_kinds")
   # A stream holding PCL and sonar frames is refused, naming the counts.
   generate_stream(pcl002 pcl)
-  generate_stream(uw003 uw)
-  execute_process(COMMAND cat ${OUT}/pcl.kstr ${OUT}/uw.kstr OUTPUT_FILE ${OUT}/mixed.kstr RESULT_VARIABLE rc)
+  generate_stream(uw003 sonar)
+  execute_process(COMMAND cat ${OUT}/pcl.kstr ${OUT}/sonar.kstr OUTPUT_FILE ${OUT}/mixed.kstr RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "cat failed (${rc})")
   endif()
   expect_replay_error(r "mixed.kstr: mixes sensor kinds: 120 PCL, [0-9]+ sonar frames" --stream ${OUT}/mixed.kstr)
 elseif(CHECK STREQUAL "replay_pcl_stream" OR CHECK STREQUAL "replay_sonar_stream")
   # A generated PCL (sonar) stream replayed through its own tracker: exit 0,
-  # the tracks CSV of `pcl` (`uw`) with rows that show a track was held,
+  # the tracks CSV of `pcl` (`sonar`) with rows that show a track was held,
   # every frame ok (or over the scan capacity, which PCL clutter reaches:
   # the frame is tracked, its excess candidates cut), and the summary naming the kind and the sensor's scenario.
   if(CHECK STREQUAL "replay_pcl_stream")
@@ -154,8 +154,8 @@ elseif(CHECK STREQUAL "replay_pcl_stream" OR CHECK STREQUAL "replay_sonar_stream
     set(frames 120)
   else()
     set(scenario uw003-1ms)
-    set(csv uw_track.csv)
-    set(filter uw-ekf)
+    set(csv sonar_track.csv)
+    set(filter sonar-ekf)
     set(header "^frame,time_s,status,reported,initialised,predict_only,x_m,")
     set(frames 50)
   endif()
@@ -211,7 +211,7 @@ elseif(CHECK STREQUAL "replay_pcl_stream" OR CHECK STREQUAL "replay_sonar_stream
 elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
   # A generated PCL (sonar) stream replayed with the truth generate wrote
   # beside it is scored with the kind's metrics, and they are the ones
-  # `pcl` (`uw`) reports for the same seed (one run).
+  # `pcl` (`sonar`) reports for the same seed (one run).
   if(CHECK STREQUAL "replay_truth_pcl")
     set(scenario pcl002)
     set(filter pcl-kf)
@@ -221,9 +221,9 @@ elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
     set(printed "association accuracy [01]\\.[0-9]+ \\([0-9]+ of [0-9]+ frames\\), coverage after confirmation")
   else()
     set(scenario uw003)
-    set(filter uw-ekf)
-    set(cmd uw)
-    set(summary_file uw_summary.json)
+    set(filter sonar-ekf)
+    set(cmd sonar)
+    set(summary_file sonar_summary.json)
     set(keys rmse_3d_m rmse_h_m rmse_depth_m nees c_err_std_per_run_mps)
     set(printed "3D RMSE [0-9]+\\.[0-9]+ m, horizontal [0-9.]+ m, depth [0-9.]+ m")
   endif()
@@ -258,7 +258,7 @@ elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
       message(FATAL_ERROR "replay's ${key} is ${got}, ${cmd}'s run of the same seed ${want}")
     endif()
   endforeach()
-  # pcl's and uw's own run-0 truth is the same file: replay takes it too.
+  # pcl's and sonar's own run-0 truth is the same file: replay takes it too.
   execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/s.truth.csv ${OUT}/run/${cmd}_truth.csv
                   RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
@@ -268,22 +268,22 @@ elseif(CHECK STREQUAL "replay_truth_mismatch")
   # Truth of another kind, or at no frame's time, is an error naming it and
   # a non-zero exit, with no summary written.
   generate_stream(pcl002 pcl)
-  generate_stream(uw003 uw)
+  generate_stream(uw003 sonar)
   execute_process(COMMAND ${SIM} generate --scenario s1 --seed 3 --out ${OUT}/s1.kstr RESULT_VARIABLE rc)
-  expect_replay_error(m1 "--truth [^ ]*uw.truth.csv is a sonar truth \\(by its columns c_mps\\); [^ ]*pcl.kstr holds PCL frames"
-                      --stream ${OUT}/pcl.kstr --truth ${OUT}/uw.truth.csv)
+  expect_replay_error(m1 "--truth [^ ]*sonar.truth.csv is a sonar truth \\(by its columns c_mps\\); [^ ]*pcl.kstr holds PCL frames"
+                      --stream ${OUT}/pcl.kstr --truth ${OUT}/sonar.truth.csv)
   expect_replay_error(m2 "--truth [^ ]*s1.truth.csv is a radar truth .*pcl.kstr holds PCL frames"
                       --stream ${OUT}/pcl.kstr --truth ${OUT}/s1.truth.csv)
   expect_replay_error(m3 "--truth [^ ]*pcl.truth.csv is a PCL truth .*s1.kstr holds radar frames"
                       --stream ${OUT}/s1.kstr --truth ${OUT}/pcl.truth.csv)
   # The sonar truth moved 1000 s later: no frame time meets it.
-  file(STRINGS ${OUT}/uw.truth.csv rows)
+  file(STRINGS ${OUT}/sonar.truth.csv rows)
   list(GET rows 0 header)
   list(GET rows 1 row)
   string(REGEX REPLACE "^[^,]*," "1000," row "${row}")
   file(WRITE ${OUT}/late.truth.csv "${header}\n${row}\n")
-  expect_replay_error(m4 "--truth [^ ]*late.truth.csv: no frame of [^ ]*uw.kstr is at a time of the truth .*frames 0.000000 .. 49.000000 s, truth 1000.000000 .. 1000.000000 s"
-                      --stream ${OUT}/uw.kstr --truth ${OUT}/late.truth.csv)
+  expect_replay_error(m4 "--truth [^ ]*late.truth.csv: no frame of [^ ]*sonar.kstr is at a time of the truth .*frames 0.000000 .. 49.000000 s, truth 1000.000000 .. 1000.000000 s"
+                      --stream ${OUT}/sonar.kstr --truth ${OUT}/late.truth.csv)
 elseif(CHECK STREQUAL "config_set_sensor")
   # run of a PCL or sonar scenario takes its tracker's keys from --config
   # and --set (--set wins over the file) and echoes them into its summary;
@@ -306,19 +306,19 @@ elseif(CHECK STREQUAL "config_set_sensor")
     endif()
   endforeach()
   execute_process(COMMAND ${SIM} run -s uw003 --runs 1 --no-plots --set per_channel_gate=false --set gate_k_sigma=3
-                          --out ${OUT}/uw
+                          --out ${OUT}/sonar
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0 OR NOT out MATCHES "UW EKF, no gate,")
     message(FATAL_ERROR "run -s uw003 --set failed or did not use it (${rc}):\n${out}${err}")
   endif()
-  file(READ ${OUT}/uw/uw_summary.json summary)
+  file(READ ${OUT}/sonar/sonar_summary.json summary)
   string(JSON gate GET ${summary} parameters per_channel_gate)
   string(JSON k GET ${summary} tracker gate_k_sigma)
   if(NOT gate EQUAL 0 OR NOT k EQUAL 3)
-    message(FATAL_ERROR "uw_summary.json: per_channel_gate ${gate}, gate_k_sigma ${k}")
+    message(FATAL_ERROR "sonar_summary.json: per_channel_gate ${gate}, gate_k_sigma ${k}")
   endif()
   foreach(bad "pcl002;confirm_m=9;--set confirm_m=9: out of range \\(whole, 1..8\\)"
-              "uw003;qj=5;--set qj=5: unknown key of the underwater tracker")
+              "uw003;qj=5;--set qj=5: unknown key of the sonar tracker")
     list(GET bad 0 scenario)
     list(GET bad 1 set)
     list(GET bad 2 pattern)
@@ -357,7 +357,7 @@ elseif(CHECK STREQUAL "suite_report")
     message(FATAL_ERROR "report.md links a figure although --no-plots drew none")
   endif()
   foreach(f s1/ekf-ca-qj160_tracks.csv s2/r2aekf_runs.csv summary.json mc001/mc001_table.md
-            pcl002/pcl_summary.json uw003/uw_summary.json)
+            pcl002/pcl_summary.json uw003/sonar_summary.json)
     if(NOT EXISTS ${OUT}/${f})
       message(FATAL_ERROR "suite did not write ${f}")
     endif()

@@ -29,7 +29,7 @@ using Toa = kestrel::MultipathToa<Motion, 4>;
 using Filter = kestrel::ChannelGatedEkf<Motion, Toa>;
 using PlainEkf = kestrel::Ekf<Motion, Toa>;
 
-Toa uw_model() {
+Toa sonar_model() {
   Toa toa;
   toa.config.beacon_count = 4;
   toa.config.beacons_m[0] = Toa::Position(0, 0, 0);
@@ -41,7 +41,7 @@ Toa uw_model() {
   return toa;
 }
 
-Motion uw_motion() {
+Motion sonar_motion() {
   Motion m;
   m.accel_sigma_mps2 = 0.05;
   m.sound_speed_q_m2ps3 = 0.01;
@@ -58,7 +58,7 @@ Motion::State truth_state() {
 /// covariance that has the position / sound-speed correlations of a real run.
 template <class F>
 F offset_filter() {
-  F f(uw_motion(), uw_model());
+  F f(sonar_motion(), sonar_model());
   Motion::State x0 = truth_state();
   x0(0) += 6;
   x0(1) -= 4;
@@ -122,7 +122,7 @@ SCENARIO("with every channel and no gate the channel-gated EKF is the EKF", "[cg
   GIVEN("the same models, prior and frame in both filters") {
     Filter f = offset_filter<Filter>();
     PlainEkf e = offset_filter<PlainEkf>();
-    const Toa::Measurement z = uw_model().predict(truth_state());
+    const Toa::Measurement z = sonar_model().predict(truth_state());
     WHEN("both update with all eight arrivals") {
       REQUIRE(f.update(z) == Status::kOk);
       REQUIRE(e.update(z) == Status::kOk);
@@ -140,7 +140,7 @@ SCENARIO("with every channel and no gate the channel-gated EKF is the EKF", "[cg
 SCENARIO("a subset update equals the update with only those channels", "[cgekf]") {
   GIVEN("a frame that carries five of the eight channels") {
     Filter f = offset_filter<Filter>();
-    Toa::Measurement z = uw_model().predict(truth_state());
+    Toa::Measurement z = sonar_model().predict(truth_state());
     const ChannelMask present = 0b10110101;
     // What an absent channel holds must not matter, NaN included.
     z(1) = std::numeric_limits<double>::quiet_NaN();
@@ -162,7 +162,7 @@ SCENARIO("a subset update equals the update with only those channels", "[cgekf]"
     WHEN("the absent channels are instead fed as zero-innovation measurements (the paper's 'replace with 0')") {
       Filter zeroed = f;
       Toa::Measurement zz = z;
-      const Toa::Measurement zh = uw_model().predict(zeroed.x());
+      const Toa::Measurement zh = sonar_model().predict(zeroed.x());
       for (int i = 0; i < Toa::kMeasDim; ++i) {
         if (!kestrel::has_channel(present, i)) zz(i) = zh(i);
       }
@@ -190,7 +190,7 @@ TEMPLATE_TEST_CASE("a channel linearisation narrowed to a subset is that subset'
   using T = kestrel::MultipathToa<M, 4>;
   using E = kestrel::Ekf<M, T>;
   T toa;
-  const Toa model = uw_model();
+  const Toa model = sonar_model();
   toa.config.beacon_count = model.config.beacon_count;
   for (int b = 0; b < 4; ++b) toa.config.beacons_m[b] = model.config.beacons_m[b].template cast<S>();
   toa.config.seabed_depth_m = static_cast<S>(model.config.seabed_depth_m);
@@ -239,7 +239,7 @@ TEMPLATE_TEST_CASE("a channel linearisation narrowed to a subset is that subset'
 SCENARIO("the per-channel gate drops an injected outlier and keeps the good arrivals", "[cgekf][gate]") {
   GIVEN("a noise-free frame with a +30 ms outlier on beacon 2's reflected arrival") {
     Filter f = offset_filter<Filter>();
-    Toa::Measurement z = uw_model().predict(truth_state());
+    Toa::Measurement z = sonar_model().predict(truth_state());
     const int bad = Toa::channel(2, kestrel::ArrivalPath::kReflected);
     z(bad) += 30e-3;
     Filter::GateConfig gate;  // per-channel, k = 2
@@ -299,7 +299,7 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps the good arri
     Filter f = offset_filter<Filter>();
     const Filter::State x_before = f.x();
     const Filter::Cov P_before = f.P();
-    Toa::Measurement z = uw_model().predict(truth_state());
+    Toa::Measurement z = sonar_model().predict(truth_state());
     z.array() += 40e-3;
     WHEN("it updates through the gate") {
       REQUIRE(f.update_gated(z, Filter::kAllChannels, Filter::GateConfig{}) == Status::kOk);
@@ -327,7 +327,7 @@ SCENARIO("the channel-gated EKF refuses bad input and keeps its state", "[cgekf]
   Filter f = offset_filter<Filter>();
   const Filter::State x_before = f.x();
   const Filter::Cov P_before = f.P();
-  Toa::Measurement z = uw_model().predict(truth_state());
+  Toa::Measurement z = sonar_model().predict(truth_state());
   GIVEN("a NaN in a present channel") {
     z(4) = std::numeric_limits<double>::quiet_NaN();
     THEN("kNonFinite, x and P unchanged") {

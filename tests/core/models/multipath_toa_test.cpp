@@ -18,7 +18,7 @@ using L = Motion::Layout;
 
 /// The UW-003 geometry (docs/scenarios.md), plus one beacon moored 40 m down (so the beacon
 /// depth term of the Jacobian is exercised too).
-Toa uw_model(double beacon3_depth_m = 0.0) {
+Toa sonar_model(double beacon3_depth_m = 0.0) {
   Toa toa;
   toa.config.beacon_count = 4;
   toa.config.beacons_m[0] = Toa::Position(0, 0, 0);
@@ -39,7 +39,7 @@ Motion::State state(double x, double y, double z, double c) {
 }  // namespace
 
 SCENARIO("the multipath TOA Jacobian matches central differences on both paths", "[models][toa]") {
-  const Toa toa = uw_model(40.0);
+  const Toa toa = sonar_model(40.0);
   // Shallow, mid-water, near the seabed, under a beacon, and off the array.
   const double states[][4] = {{500, 800, 60, 1500},   {1700, 300, 5, 1498.2}, {1000, 1000, 140, 1501.7},
                               {1990, 1980, 75, 1500}, {-400, 2600, 100, 1499}};
@@ -86,7 +86,7 @@ SCENARIO("the multipath TOA Jacobian matches central differences on both paths",
 }
 
 SCENARIO("the reflected time is the length of the specular seabed path over c", "[models][toa]") {
-  const Toa toa = uw_model(40.0);
+  const Toa toa = sonar_model(40.0);
   GIVEN("a target at 60 m depth and each beacon") {
     const Motion::State x = state(500, 800, 60, 1500);
     const Toa::Measurement t = toa.predict(x);
@@ -108,7 +108,7 @@ SCENARIO("the reflected time is the length of the specular seabed path over c", 
     }
   }
   GIVEN("a model with two of its four beacon slots configured") {
-    Toa two = uw_model();
+    Toa two = sonar_model();
     two.config.beacon_count = 2;
     const Motion::State x = state(500, 800, 60, 1500);
     THEN("the unconfigured channels predict 0 with zero Jacobian rows") {

@@ -25,7 +25,7 @@ using Motion = kestrel::ConstantVelocity3DSoundSpeed<double>;
 using Toa = kestrel::MultipathToa<Motion, 4>;
 using Config = kestrel::MultilaterationConfig<double>;
 
-Toa uw_model() {
+Toa sonar_model() {
   Toa toa;
   toa.config.beacon_count = 4;
   toa.config.beacons_m[0] = Toa::Position(0, 0, 0);
@@ -51,7 +51,7 @@ constexpr ChannelMask kAll = 0xFF;
 }  // namespace
 
 SCENARIO("multilateration recovers a known point", "[multilateration]") {
-  const Toa toa = uw_model();
+  const Toa toa = sonar_model();
   const Config cfg;
   const Toa::Position points[] = {{500, 800, 60}, {1500, 200, 10}, {1000, 1000, 140}, {1900, 1700, 95}};
   for (const auto& p : points) {
@@ -114,7 +114,7 @@ SCENARIO("multilateration recovers a known point", "[multilateration]") {
 
 SCENARIO("the multilateration covariance matches its errors, and depth needs the reflected paths",
          "[multilateration]") {
-  const Toa toa = uw_model();
+  const Toa toa = sonar_model();
   const Config cfg;
   const Toa::Position p(500, 800, 60);
   GIVEN("200 frames with 3 ms Gaussian noise (seeded)") {
@@ -147,14 +147,14 @@ SCENARIO("the multilateration covariance matches its errors, and depth needs the
     }
     THEN("direct arrivals alone leave depth several times less certain") {
       // Every beacon is on the surface: dt/dz of a direct path is z/(d c),
-      // a few per cent of the horizontal terms (docs/underwater.md).
+      // a few per cent of the horizontal terms (docs/sonar.md).
       CHECK(std::sqrt(depth_var_direct / n) > 3.0 * std::sqrt(depth_var_both / n));
     }
   }
 }
 
 SCENARIO("multilateration reports why it has no fix", "[multilateration][status]") {
-  const Toa toa = uw_model();
+  const Toa toa = sonar_model();
   const Config cfg;
   const Toa::Position p(500, 800, 60);
   GIVEN("three arrivals") {

@@ -2,7 +2,7 @@
 // The tracker fuzz invariants (tests/fuzz/*_tracker_invariants.hpp) under
 // the normal build: every input of each fuzz corpus, findings included, and
 // a seeded batch of random inputs, for the radar tracker (double, float,
-// Q31.32), the PCL tracker and the underwater tracker (double, float).
+// Q31.32), the PCL tracker and the sonar tracker (double, float).
 #include <catch2/catch.hpp>
 
 #include <cstdint>
@@ -16,7 +16,7 @@
 
 #include "fuzz/pcl_tracker_invariants.hpp"
 #include "fuzz/radar_tracker_invariants.hpp"
-#include "fuzz/underwater_tracker_invariants.hpp"
+#include "fuzz/sonar_tracker_invariants.hpp"
 
 namespace {
 
@@ -44,7 +44,7 @@ int replay_corpus(const char* name, Check check) {
   return inputs;
 }
 
-/// A random input in the frame format of the PCL and underwater harnesses
+/// A random input in the frame format of the PCL and sonar harnesses
 /// that mostly keeps to the sensor's rhythm, so tracks form between the
 /// faults: 7 frames in 8 step one period (op bits 0-1 clear) and 3 items in
 /// 4 are target detections (item bit 0 clear); every other bit is random.
@@ -72,7 +72,7 @@ std::vector<std::uint8_t> rhythmic_input(std::mt19937_64& rng, int frames, int (
 }
 
 // Bytes a non-target item reads (pcl_tracker_invariants.hpp,
-// underwater_tracker_invariants.hpp).
+// sonar_tracker_invariants.hpp).
 int pcl_operand_bytes(std::uint8_t b) { return (b & 2u) == 0 ? 4 : 10; }
 int sonar_operand_bytes(std::uint8_t b) { return (b & 0x80u) != 0 ? 5 : 4; }
 
@@ -124,10 +124,10 @@ SCENARIO("seeded random inputs keep the PCL tracker invariants", "[pcl][tracker]
   CHECK(tally.refused > 100);
 }
 
-SCENARIO("every underwater tracker fuzz corpus input keeps the tracker invariants", "[uw][tracker][fuzz]") {
+SCENARIO("every sonar tracker fuzz corpus input keeps the tracker invariants", "[sonar][tracker][fuzz]") {
   FuzzTally tally;
-  const int inputs = replay_corpus("underwater_tracker", [&tally](std::span<const std::uint8_t> bytes) {
-    return kestrel::test::check_underwater_tracker_invariants(bytes, &tally);
+  const int inputs = replay_corpus("sonar_tracker", [&tally](std::span<const std::uint8_t> bytes) {
+    return kestrel::test::check_sonar_tracker_invariants(bytes, &tally);
   });
   CHECK(inputs >= 8);
   CHECK(tally.reports > 200);
@@ -135,12 +135,12 @@ SCENARIO("every underwater tracker fuzz corpus input keeps the tracker invariant
   CHECK(tally.truncated >= 10);
 }
 
-SCENARIO("seeded random inputs keep the underwater tracker invariants", "[uw][tracker][fuzz]") {
+SCENARIO("seeded random inputs keep the sonar tracker invariants", "[sonar][tracker][fuzz]") {
   std::mt19937_64 rng(20261203);
   FuzzTally tally;
   for (int n = 0; n < 150; ++n) {
     const auto bytes = rhythmic_input(rng, 1 + static_cast<int>(rng() % 24), sonar_operand_bytes);
-    const char* why = kestrel::test::check_underwater_tracker_invariants(bytes, &tally);
+    const char* why = kestrel::test::check_sonar_tracker_invariants(bytes, &tally);
     INFO("input " << n << ": " << (why != nullptr ? why : "ok"));
     CHECK(why == nullptr);
   }

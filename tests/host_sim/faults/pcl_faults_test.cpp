@@ -4,7 +4,7 @@
 // 120 frames at 0.5 s) -> wire bytes -> StreamFileFeed (frame assembler) ->
 // PclAdapter -> the default PCL tracker (nearest neighbour, 5-of-6), inside
 // hal::Runner (sim::run_pcl_stream). The radar and sonar counterparts are
-// fault_injection_test.cpp and underwater_faults_test.cpp; the table is in
+// fault_injection_test.cpp and sonar_faults_test.cpp; the table is in
 // docs/robustness.md. Each fault has its expected count of every status
 // and of the drone tracks that replace the first one (only where a rule
 // deletes it: a gap over max_predict_us, a clock taken by the resync rule),

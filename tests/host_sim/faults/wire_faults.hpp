@@ -2,7 +2,7 @@
 // Building blocks of the fault-injection tests: a stream of wire frames
 // with each frame sent, dropped, repeated, re-timed or damaged on purpose,
 // and what a fault expects of the Runner. Shared by the sonar and PCL
-// tests (underwater_faults_test.cpp, pcl_faults_test.cpp); the radar test
+// tests (sonar_faults_test.cpp, pcl_faults_test.cpp); the radar test
 // uses the damage helpers.
 #pragma once
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The PCL and underwater trackers' keys (filters/sensor_settings.hpp): --set
+// The PCL and sonar trackers' keys (filters/sensor_settings.hpp): --set
 // and --config reach the tracker parameters, a bad key or value is refused
 // naming it and changes nothing, the summary echo names every key, and
 // docs/parameters.md gives every key with the default the code has.
@@ -12,7 +12,7 @@
 
 #include "filters/sensor_settings.hpp"
 #include "montecarlo/pcl_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 
 using namespace kestrel;       // NOLINT(google-build-using-namespace)
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
@@ -85,12 +85,12 @@ SCENARIO("PCL tracker keys set PclTrackerParams", "[settings][pcl]") {
   }
 }
 
-SCENARIO("Underwater tracker keys set UnderwaterTrackerParams", "[settings][uw]") {
+SCENARIO("Sonar tracker keys set SonarTrackerParams", "[settings][sonar]") {
   GIVEN("uw003's tracker parameters") {
-    const UnderwaterTrackerParams base = uw_params_for(uw003_config());
+    const SonarTrackerParams base = sonar_params_for(uw003_config());
     WHEN("a real, a boolean, a gate and a whole key are set") {
-      UnderwaterTrackerParams p = base;
-      apply_uw_settings(sets({"gate_k_sigma=3", "per_channel_gate=false", "ellipsoidal_gate=true",
+      SonarTrackerParams p = base;
+      apply_sonar_settings(sets({"gate_k_sigma=3", "per_channel_gate=false", "ellipsoidal_gate=true",
                               "ellipsoid_probability=0.95", "reacquire_after_lost_frames=0"}),
                         p);
       THEN("each reaches its field") {
@@ -100,16 +100,16 @@ SCENARIO("Underwater tracker keys set UnderwaterTrackerParams", "[settings][uw]"
         CHECK(p.ellipsoid_probability == GateProbability::k95);
         CHECK(p.reacquire_after_lost_frames == 0);
         CHECK(p.seabed_depth_m == base.seabed_depth_m);
-        CHECK(uw_parameters(p).at("per_channel_gate") == 0.0);
+        CHECK(sonar_parameters(p).at("per_channel_gate") == 0.0);
       }
     }
     WHEN("a boolean gets 2 or a radar key is given") {
-      UnderwaterTrackerParams p = base;
-      const auto apply = [](const std::vector<Setting>& s, UnderwaterTrackerParams& q) { apply_uw_settings(s, q); };
+      SonarTrackerParams p = base;
+      const auto apply = [](const std::vector<Setting>& s, SonarTrackerParams& q) { apply_sonar_settings(s, q); };
       THEN("it is refused by name and nothing changes") {
         CHECK_THAT(refusal({"gate_k_sigma=3", "project_depth=2"}, p, apply),
                    Catch::Contains("--set project_depth=2: out of range (false or true)"));
-        CHECK_THAT(refusal({"gate_k=3"}, p, apply), Catch::Contains("unknown key of the underwater tracker"));
+        CHECK_THAT(refusal({"gate_k=3"}, p, apply), Catch::Contains("unknown key of the sonar tracker"));
         CHECK_THAT(refusal({"sigma_rb_m=3"}, p, apply), Catch::Contains("; it is a key of the PCL tracker."));
         CHECK(p.gate_k_sigma == base.gate_k_sigma);
       }
@@ -122,7 +122,7 @@ SCENARIO("docs/parameters.md gives every PCL and underwater key with its default
   REQUIRE(in);
   std::stringstream doc;
   doc << in.rdbuf();
-  for (const auto& table : {pcl_setting_table(), uw_setting_table()}) {
+  for (const auto& table : {pcl_setting_table(), sonar_setting_table()}) {
     for (const SettingInfo& i : table) {
       INFO(i.key);
       CHECK(doc.str().find("| `" + i.key + "` | " + i.default_text + " | " + i.range + " |") != std::string::npos);
@@ -135,11 +135,11 @@ SCENARIO("docs/parameters.md gives every PCL and underwater key with its default
       INFO(i.key);
       CHECK_NOTHROW(apply_pcl_settings(sets({i.key + "=" + i.default_text}), p));
     }
-    UnderwaterTrackerParams u = uw_params_for(uw003_config());
-    for (const SettingInfo& i : uw_setting_table()) {
+    SonarTrackerParams u = sonar_params_for(uw003_config());
+    for (const SettingInfo& i : sonar_setting_table()) {
       if (i.default_text.find(' ') != std::string::npos) continue;
       INFO(i.key);
-      CHECK_NOTHROW(apply_uw_settings(sets({i.key + "=" + i.default_text}), u));
+      CHECK_NOTHROW(apply_sonar_settings(sets({i.key + "=" + i.default_text}), u));
     }
   }
 }
@@ -165,14 +165,14 @@ SCENARIO("A key of another tracker than the one of the frames' kind is refused a
                                "it is a key of the radar tracker. The keys of each tracker: `kestrel-sim list "
                                "--settings`"));
       CHECK_THAT(refused({"confirm_m=3"}, hal::FrameKind::kSonar),
-                 Catch::Contains("'confirm_m' is not a key of the underwater tracker") &&
+                 Catch::Contains("'confirm_m' is not a key of the sonar tracker") &&
                      Catch::Contains("it is a key of the radar and PCL trackers."));
       CHECK_THAT(refused({"gate_k_sigma=3"}, hal::FrameKind::kRadar),
                  Catch::Contains("--set gate_k_sigma=3: 'gate_k_sigma' is not a key of the radar tracker") &&
-                     Catch::Contains("it is a key of the underwater tracker"));
+                     Catch::Contains("it is a key of the sonar tracker"));
       CHECK_THAT(refused({"imm.p_stay=0.9"}, hal::FrameKind::kPcl), Catch::Contains("a key of the radar tracker"));
       CHECK_THAT(refused({"sa=1"}, hal::FrameKind::kSonar),
-                 Catch::Contains("'sa' is not a key of the underwater tracker") &&
+                 Catch::Contains("'sa' is not a key of the sonar tracker") &&
                      Catch::Contains("no tracker has it") && Catch::Contains("`kestrel-sim list --settings`"));
     }
   }

@@ -25,7 +25,7 @@
 #include "filters/filter_registry.hpp"
 #include "montecarlo/pcl_run.hpp"
 #include "montecarlo/single_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "scenarios/registry.hpp"
 
 namespace {
@@ -181,11 +181,11 @@ TEST_CASE("Golden replay: PCL pcl002 through the board loop, default policies", 
   check_golden("pcl_pcl002", t, 10, 1e-9);
 }
 
-TEST_CASE("Golden replay: sonar uw003 through the board loop, the default underwater tracker",
+TEST_CASE("Golden replay: sonar uw003 through the board loop, the default sonar tracker",
           "[host_sim][golden]") {
-  const UwScenarioConfig c = uw003_config();
-  const UwScenarioRun run = generate_uw(c, 1);
-  const UwRunOutput out = run_uw(run, uw_params_for(c), 1000000000);
+  const SonarScenarioConfig c = uw003_config();
+  const SonarScenarioRun run = generate_sonar(c, 1);
+  const SonarRunOutput out = run_sonar(run, sonar_params_for(c), 1000000000);
   Table t{"frame,status,reported,initialised,predict_only,present,fused,gated,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"
           "sd_x,sd_y,sd_z,sd_vx,sd_vy,sd_vz,sd_c,nis",
           {}};
@@ -200,5 +200,5 @@ TEST_CASE("Golden replay: sonar uw003 through the board loop, the default underw
     row.push_back(f.nis);
     t.rows.push_back(row);
   }
-  check_golden("uw_uw003", t, 8, 1e-9);
+  check_golden("sonar_uw003", t, 8, 1e-9);
 }

@@ -2,7 +2,7 @@
 // `replay --truth` of PCL and sonar streams: the truth CSV `generate` writes
 // is read back exactly and tells its kind by its columns, and a replay of
 // the unchanged stream scored against it gives the generating run's
-// metrics bit for bit (the kind's scorer, as `pcl` and `uw` use it).
+// metrics bit for bit (the kind's scorer, as `pcl` and `sonar` use it).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdint>
@@ -15,12 +15,12 @@
 #include "csv/truth_csv.hpp"
 #include "metrics/replay_scoring.hpp"
 #include "montecarlo/pcl_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "stream/stream_writer.hpp"
 
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace): test file
 using kestrel::PclTrackerParams;
-using kestrel::UnderwaterTrackerParams;
+using kestrel::SonarTrackerParams;
 using kestrel::hal::FrameKind;
 
 namespace {
@@ -39,11 +39,11 @@ constexpr std::uint64_t kBudgetNs = 1'000'000'000;
 SCENARIO("PCL and sonar truth CSVs round-trip and name their kind", "[host_sim][replay_scoring]") {
   GIVEN("the truth of pcl002 seed 3 and uw003 seed 3 as generate writes it") {
     const PclScenarioRun pcl = generate_pcl(pcl002_config(), 3);
-    const UwScenarioRun uw = generate_uw(uw_config_by_name("uw003"), 3);
+    const SonarScenarioRun sonar = generate_sonar(sonar_config_by_name("uw003"), 3);
     const auto pcl_path = temp_path("pcl.truth.csv");
-    const auto uw_path = temp_path("uw.truth.csv");
+    const auto sonar_path = temp_path("sonar.truth.csv");
     write_pcl_truth_csv(pcl_path, pcl);
-    write_uw_truth_csv(uw_path, uw);
+    write_sonar_truth_csv(sonar_path, sonar);
     THEN("each file is read back bit for bit, the target detection and outliers included") {
       const std::vector<PclTruthRow> p = read_pcl_truth_csv(pcl_path);
       REQUIRE(p.size() == pcl.truth.size());
@@ -62,30 +62,30 @@ SCENARIO("PCL and sonar truth CSVs round-trip and name their kind", "[host_sim][
         }
       }
       CHECK(detections > 90);  // P_D 0.9 over 120 frames
-      const std::vector<UwTruthRow> u = read_uw_truth_csv(uw_path);
-      REQUIRE(u.size() == uw.truth.size());
+      const std::vector<SonarTruthRow> u = read_sonar_truth_csv(sonar_path);
+      REQUIRE(u.size() == sonar.truth.size());
       std::size_t outliers = 0;
       for (std::size_t k = 0; k < u.size(); ++k) {
-        CHECK(u[k].truth.z_m == uw.truth[k].z_m);
-        CHECK(u[k].truth.c_mps == uw.truth[k].c_mps);
+        CHECK(u[k].truth.z_m == sonar.truth[k].z_m);
+        CHECK(u[k].truth.c_mps == sonar.truth[k].c_mps);
         CHECK(u[k].channels == 0xFFu);  // 4 beacons x direct and reflected
-        for (const UwArrivalRecord& a : uw.frames[k].arrivals) outliers += a.outlier ? 1 : 0;
+        for (const SonarArrivalRecord& a : sonar.frames[k].arrivals) outliers += a.outlier ? 1 : 0;
       }
       std::size_t outlier_bits = 0;
-      for (const UwTruthRow& r : u) {
+      for (const SonarTruthRow& r : u) {
         for (std::uint32_t b = r.outlier_channels; b != 0; b &= b - 1) ++outlier_bits;
       }
       CHECK(outlier_bits == outliers);
     }
     THEN("the kind of a truth CSV is told by its columns") {
       CHECK(truth_csv_kind(pcl_path) == FrameKind::kPcl);
-      CHECK(truth_csv_kind(uw_path) == FrameKind::kSonar);
+      CHECK(truth_csv_kind(sonar_path) == FrameKind::kSonar);
       const auto radar_path = temp_path("radar.truth.csv");
       write_truth_csv(radar_path, {TruthSample{}});
       CHECK(truth_csv_kind(radar_path) == FrameKind::kRadar);
     }
     THEN("a PCL truth is not a sonar truth: reading it as one names the missing column") {
-      CHECK_THROWS_WITH(read_uw_truth_csv(pcl_path), Catch::Contains("missing required column 'c_mps'"));
+      CHECK_THROWS_WITH(read_sonar_truth_csv(pcl_path), Catch::Contains("missing required column 'c_mps'"));
     }
   }
 }
@@ -151,20 +151,20 @@ SCENARIO("A PCL replay scored against its truth gives the generating run's metri
   }
 }
 
-SCENARIO("A sonar replay scored against its truth gives the generating run's metrics", "[host_sim][replay_scoring][uw]") {
+SCENARIO("A sonar replay scored against its truth gives the generating run's metrics", "[host_sim][replay_scoring][sonar]") {
   for (const char* name : {"uw003", "uw003-1ms"}) {
-    GIVEN(std::string(name) + " seed 5, run as `uw` runs it and replayed from its stream and truth CSV") {
-      const UwScenarioConfig c = uw_config_by_name(name);
-      const UwScenarioRun run = generate_uw(c, 5);
-      const UnderwaterTrackerParams params = uw_params_for(c);
-      const UwRunMetrics want = score_uw_run(run, run_uw(run, params, kBudgetNs));
+    GIVEN(std::string(name) + " seed 5, run as `sonar` runs it and replayed from its stream and truth CSV") {
+      const SonarScenarioConfig c = sonar_config_by_name(name);
+      const SonarScenarioRun run = generate_sonar(c, 5);
+      const SonarTrackerParams params = sonar_params_for(c);
+      const SonarRunMetrics want = score_sonar_run(run, run_sonar(run, params, kBudgetNs));
       const auto path = temp_path(std::string(name) + ".truth.csv");
-      write_uw_truth_csv(path, run);
-      const UwReplayScore got =
-          score_uw_replay(run_uw_stream(encode_uw_stream(run), params, kBudgetNs), read_uw_truth_csv(path));
+      write_sonar_truth_csv(path, run);
+      const SonarReplayScore got =
+          score_sonar_replay(run_sonar_stream(encode_sonar_stream(run), params, kBudgetNs), read_sonar_truth_csv(path));
       THEN("every frame is matched and every figure is the run's, bit for bit") {
         CHECK(got.match.matched == run.frames.size());
-        const UwRunMetrics& m = got.metrics;
+        const SonarRunMetrics& m = got.metrics;
         CHECK(m.init_frame == want.init_frame);
         CHECK(m.scored_frames == want.scored_frames);
         CHECK(m.scored_frames > 40);

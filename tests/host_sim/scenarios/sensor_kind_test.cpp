@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "montecarlo/pcl_run.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "scenarios/pcl002.hpp"
 #include "scenarios/sensor_kind.hpp"
 #include "scenarios/uw003.hpp"
@@ -17,7 +17,7 @@
 
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace): test file
 using kestrel::PclTrackerParams;
-using kestrel::UnderwaterTrackerParams;
+using kestrel::SonarTrackerParams;
 using kestrel::hal::FrameKind;
 
 SCENARIO("Scenario and filter names map to their sensor kind", "[host_sim][sensor_kind]") {
@@ -30,7 +30,7 @@ SCENARIO("Scenario and filter names map to their sensor kind", "[host_sim][senso
   }
   THEN("the filters that fit a kind are its own only") {
     CHECK(filters_for_kind(FrameKind::kPcl) == std::vector<std::string>{"pcl-kf"});
-    CHECK(filters_for_kind(FrameKind::kSonar) == std::vector<std::string>{"uw-ekf"});
+    CHECK(filters_for_kind(FrameKind::kSonar) == std::vector<std::string>{"sonar-ekf"});
     const std::vector<std::string> radar = filters_for_kind(FrameKind::kRadar);
     CHECK(std::find(radar.begin(), radar.end(), "ekf-ca") != radar.end());
     CHECK(std::find(radar.begin(), radar.end(), "pcl-kf") == radar.end());
@@ -43,9 +43,9 @@ SCENARIO("Scenario and filter names map to their sensor kind", "[host_sim][senso
 SCENARIO("A decoded stream's frames are counted by kind", "[host_sim][sensor_kind]") {
   GIVEN("a PCL stream followed by a sonar stream") {
     const PclScenarioRun pcl = generate_pcl(pcl002_config(), 3);
-    const UwScenarioRun uw = generate_uw(uw_config_by_name("uw003"), 3);
+    const SonarScenarioRun sonar = generate_sonar(sonar_config_by_name("uw003"), 3);
     std::vector<std::uint8_t> bytes = encode_pcl_stream(pcl);
-    const std::vector<std::uint8_t> sonar = encode_uw_stream(uw);
+    const std::vector<std::uint8_t> sonar = encode_sonar_stream(sonar);
     bytes.insert(bytes.end(), sonar.begin(), sonar.end());
     std::size_t skipped = 0;
     std::vector<MeasurementFrame> frames = decode_stream(bytes, skipped);
@@ -53,10 +53,10 @@ SCENARIO("A decoded stream's frames are counted by kind", "[host_sim][sensor_kin
     THEN("both kinds are counted and named") {
       const FrameKindCounts c = count_frame_kinds(frames);
       CHECK(c.pcl == pcl.frames.size());
-      CHECK(c.sonar == uw.frames.size());
+      CHECK(c.sonar == sonar.frames.size());
       CHECK(c.radar == 0);
       CHECK(c.kinds() == 2);
-      CHECK(c.describe() == std::to_string(pcl.frames.size()) + " PCL, " + std::to_string(uw.frames.size()) + " sonar");
+      CHECK(c.describe() == std::to_string(pcl.frames.size()) + " PCL, " + std::to_string(sonar.frames.size()) + " sonar");
     }
     THEN("a frame that did not decode counts as undecoded, not as radar") {
       frames.push_back(MeasurementFrame{});
@@ -97,13 +97,13 @@ SCENARIO("A PCL stream replayed without its reference gives the scenario run's t
   }
 }
 
-SCENARIO("A sonar stream replayed gives the scenario run's estimates with their frame times", "[host_sim][sensor_kind][uw]") {
+SCENARIO("A sonar stream replayed gives the scenario run's estimates with their frame times", "[host_sim][sensor_kind][sonar]") {
   GIVEN("uw003 seed 3") {
-    const UwScenarioConfig c = uw_config_by_name("uw003");
-    const UwScenarioRun run = generate_uw(c, 3);
-    const UnderwaterTrackerParams params = uw_params_for(c);
-    const UwRunOutput a = run_uw(run, params, 1'000'000'000);
-    const UwRunOutput b = run_uw_stream(encode_uw_stream(run), params, 1'000'000'000);
+    const SonarScenarioConfig c = sonar_config_by_name("uw003");
+    const SonarScenarioRun run = generate_sonar(c, 3);
+    const SonarTrackerParams params = sonar_params_for(c);
+    const SonarRunOutput a = run_sonar(run, params, 1'000'000'000);
+    const SonarRunOutput b = run_sonar_stream(encode_sonar_stream(run), params, 1'000'000'000);
     THEN("the estimates agree bit for bit and t_s is the wire time") {
       REQUIRE(b.frames.size() == run.frames.size());
       std::size_t reported = 0;

@@ -10,27 +10,27 @@
 #include <cstring>
 #include <utility>
 
-#include "metrics/uw_metrics.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "metrics/sonar_metrics.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "scenarios/uw003.hpp"
 
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace): test file
 
 namespace {
 
-double distance(const UwTruth& t, double bx, double by, double bz, double z) {
+double distance(const SonarTruth& t, double bx, double by, double bz, double z) {
   return std::sqrt((t.x_m - bx) * (t.x_m - bx) + (t.y_m - by) * (t.y_m - by) + (z - bz) * (z - bz));
 }
 
 }  // namespace
 
-SCENARIO("UW-003 frames follow docs/scenarios.md", "[host_sim][scenarios][uw]") {
-  const UwScenarioConfig c = uw003_config();
+SCENARIO("UW-003 frames follow docs/scenarios.md", "[host_sim][scenarios][sonar]") {
+  const SonarScenarioConfig c = uw003_config();
   GIVEN("200 seeded runs") {
     std::size_t arrivals = 0, outliers = 0;
     double noise_sum2 = 0.0, c_min = 1e9, c_max = 0.0, delay_min = 1.0, delay_max = 0.0;
     for (std::uint64_t seed = 0; seed < 200; ++seed) {
-      const UwScenarioRun run = generate_uw(c, seed);
+      const SonarScenarioRun run = generate_sonar(c, seed);
       REQUIRE(run.truth.size() == 50);
       REQUIRE(run.frames.size() == 50);
       CHECK(run.truth[0].x_m == 500.0);
@@ -39,15 +39,15 @@ SCENARIO("UW-003 frames follow docs/scenarios.md", "[host_sim][scenarios][uw]") 
       CHECK(run.truth[0].vx_mps == 1.2);
       CHECK(run.truth[0].c_mps == 1500.0);
       for (std::size_t k = 0; k < run.frames.size(); ++k) {
-        const UwTruth& t = run.truth[k];
-        const UwFrameRecord& f = run.frames[k];
+        const SonarTruth& t = run.truth[k];
+        const SonarFrameRecord& f = run.frames[k];
         REQUIRE(f.wire.kind == kestrel::hal::FrameKind::kSonar);
         REQUIRE(f.wire.count == 8);
         CHECK(f.wire.t_us == static_cast<std::int64_t>(k) * 1000000);
         c_min = std::min(c_min, t.c_mps);
         c_max = std::max(c_max, t.c_mps);
         for (std::size_t i = 0; i < f.arrivals.size(); ++i) {
-          const UwArrivalRecord& a = f.arrivals[i];
+          const SonarArrivalRecord& a = f.arrivals[i];
           const auto& b = c.beacons_m[a.beacon];
           const double z = a.path == kestrel::hal::ToaPath::kDirect ? t.z_m : 2 * 150.0 - t.z_m;
           // The image source: noise-free time = |p' - b| / c.
@@ -87,12 +87,12 @@ SCENARIO("UW-003 frames follow docs/scenarios.md", "[host_sim][scenarios][uw]") 
   }
 }
 
-SCENARIO("UW variants share uw003's draws and change only what they name", "[host_sim][scenarios][uw]") {
-  const UwScenarioRun base = generate_uw(uw003_config(), 42);
-  const UwScenarioRun direct = generate_uw(uw_config_by_name("uw003-direct"), 42);
-  const UwScenarioRun clean = generate_uw(uw_config_by_name("uw003-clean"), 42);
-  const UwScenarioRun fine = generate_uw(uw_config_by_name("UW003-1MS"), 42);
-  const UwScenarioRun d100 = generate_uw(uw_config_by_name("uw003-d100"), 42);
+SCENARIO("UW variants share uw003's draws and change only what they name", "[host_sim][scenarios][sonar]") {
+  const SonarScenarioRun base = generate_sonar(uw003_config(), 42);
+  const SonarScenarioRun direct = generate_sonar(sonar_config_by_name("uw003-direct"), 42);
+  const SonarScenarioRun clean = generate_sonar(sonar_config_by_name("uw003-clean"), 42);
+  const SonarScenarioRun fine = generate_sonar(sonar_config_by_name("UW003-1MS"), 42);
+  const SonarScenarioRun d100 = generate_sonar(sonar_config_by_name("uw003-d100"), 42);
   for (std::size_t k = 0; k < 50; ++k) {
     CHECK(direct.truth[k].x_m == base.truth[k].x_m);
     CHECK(clean.truth[k].c_mps == base.truth[k].c_mps);
@@ -103,13 +103,13 @@ SCENARIO("UW variants share uw003's draws and change only what they name", "[hos
       CHECK(direct.frames[k].arrivals[b].path == kestrel::hal::ToaPath::kDirect);
     }
     for (std::size_t i = 0; i < 8; ++i) {
-      const UwArrivalRecord& a = base.frames[k].arrivals[i];
+      const SonarArrivalRecord& a = base.frames[k].arrivals[i];
       CHECK_FALSE(clean.frames[k].arrivals[i].outlier);
       // Subtractions on ~1.4 s values round at ~2e-16 each.
       CHECK(std::abs(clean.frames[k].arrivals[i].toa_s - (a.toa_s - a.outlier_s)) < 1e-14);
       // 1 ms noise is the 3 ms noise scaled by 1/3.
       const double n3 = a.toa_s - a.true_toa_s - a.outlier_s;
-      const UwArrivalRecord& f = fine.frames[k].arrivals[i];
+      const SonarArrivalRecord& f = fine.frames[k].arrivals[i];
       CHECK(std::abs((f.toa_s - f.true_toa_s - f.outlier_s) - n3 / 3.0) < 1e-14);
       if (a.path == kestrel::hal::ToaPath::kReflected) {
         CHECK(d100.frames[k].arrivals[i].true_toa_s < a.true_toa_s);  // shallower seabed, shorter bounce
@@ -117,8 +117,8 @@ SCENARIO("UW variants share uw003's draws and change only what they name", "[hos
     }
   }
   THEN("the same seed gives the same bytes, another seed does not") {
-    const UwScenarioRun again = generate_uw(uw003_config(), 42);
-    const UwScenarioRun other = generate_uw(uw003_config(), 43);
+    const SonarScenarioRun again = generate_sonar(uw003_config(), 42);
+    const SonarScenarioRun other = generate_sonar(uw003_config(), 43);
     bool same = true, differs = false;
     for (std::size_t k = 0; k < 50; ++k) {
       same = same && std::memcmp(&again.frames[k].wire, &base.frames[k].wire, sizeof(kestrel::hal::Frame)) == 0;
@@ -127,26 +127,26 @@ SCENARIO("UW variants share uw003's draws and change only what they name", "[hos
     CHECK(same);
     CHECK(differs);
   }
-  THEN("unknown names are refused") { CHECK_THROWS_AS(uw_config_by_name("uw004"), std::invalid_argument); }
+  THEN("unknown names are refused") { CHECK_THROWS_AS(sonar_config_by_name("uw004"), std::invalid_argument); }
 }
 
-SCENARIO("UW metrics on a hand-made run", "[host_sim][metrics][uw]") {
-  UwScenarioRun run;
-  UwRunOutput out;
+SCENARIO("UW metrics on a hand-made run", "[host_sim][metrics][sonar]") {
+  SonarScenarioRun run;
+  SonarRunOutput out;
   for (int k = 0; k < 4; ++k) {
-    UwTruth t;
+    SonarTruth t;
     t.t_s = k;
     t.x_m = 100.0 * k;
     t.c_mps = 1500.0;
     run.truth.push_back(t);
-    UwFrameRecord f;
-    UwArrivalRecord a;
+    SonarFrameRecord f;
+    SonarArrivalRecord a;
     a.beacon = 1;
     a.path = kestrel::hal::ToaPath::kReflected;  // channel 3
     a.outlier = k == 2;
     f.arrivals.push_back(a);
     run.frames.push_back(f);
-    UwFrameOutcome o;
+    SonarFrameOutcome o;
     o.stepped = true;
     o.reported = true;
     o.initialised = k == 0;
@@ -155,7 +155,7 @@ SCENARIO("UW metrics on a hand-made run", "[host_sim][metrics][uw]") {
     o.gated = k >= 2 ? (1u << 3) : 0u;  // frame 2: the outlier; frame 3: a good arrival
     out.frames.push_back(o);
   }
-  const UwRunMetrics m = score_uw_run(run, out);
+  const SonarRunMetrics m = score_sonar_run(run, out);
   THEN("the fix frame is not scored and the others are") {
     CHECK(m.init_frame == 0);
     CHECK(m.scored_frames == 3);
@@ -177,7 +177,7 @@ SCENARIO("UW metrics on a hand-made run", "[host_sim][metrics][uw]") {
     CHECK(m.gated == 2);
   }
   THEN("the summary pools the sound-speed errors and builds per-frame RMSE") {
-    const UwSummary s = summarise_uw({m, m}, 1000);
+    const SonarSummary s = summarise_sonar({m, m}, 1000);
     CHECK(s.runs == 2);
     CHECK(s.rmse_3d_m.mean == Approx(m.rmse_3d_m));
     CHECK(s.pooled_c_err_std_mps == Approx(std::sqrt(8.0 / 9.0)));
@@ -188,22 +188,22 @@ SCENARIO("UW metrics on a hand-made run", "[host_sim][metrics][uw]") {
   }
 }
 
-SCENARIO("the underwater tracker through the board loop on UW-003", "[host_sim][end_to_end][uw]") {
-  UwMonteCarloConfig mc;
+SCENARIO("the sonar tracker through the board loop on UW-003", "[host_sim][end_to_end][sonar]") {
+  SonarMonteCarloConfig mc;
   mc.runs = 20;
   mc.jobs = 2;
   const auto summary = [&](const char* scenario, double k, bool gate) {
-    const UwScenarioConfig sc = uw_config_by_name(scenario);
-    kestrel::UnderwaterTrackerParams p = uw_params_for(sc);
+    const SonarScenarioConfig sc = sonar_config_by_name(scenario);
+    kestrel::SonarTrackerParams p = sonar_params_for(sc);
     p.gate_k_sigma = k;
     p.per_channel_gate = gate;
-    return summarise_uw(run_uw_monte_carlo(sc, p, mc).runs, mc.budget_ns);
+    return summarise_sonar(run_sonar_monte_carlo(sc, p, mc).runs, mc.budget_ns);
   };
-  const UwSummary k3 = summary("uw003", 3.0, true);
-  const UwSummary ungated = summary("uw003", 3.0, false);
-  const UwSummary direct = summary("uw003-direct", 3.0, true);
+  const SonarSummary k3 = summary("uw003", 3.0, true);
+  const SonarSummary ungated = summary("uw003", 3.0, false);
+  const SonarSummary direct = summary("uw003-direct", 3.0, true);
   THEN("every run initialises on frame 0 and tracks at UW-003's error scale") {
-    // 200 runs give 6.0 / 1.8 m (docs/underwater.md); 20 runs scatter by ~0.5 m.
+    // 200 runs give 6.0 / 1.8 m (docs/sonar.md); 20 runs scatter by ~0.5 m.
     CHECK(k3.runs_not_initialised == 0);
     CHECK(k3.frames_refused == 0);
     CHECK(k3.rmse_3d_m.mean < 7.5);
@@ -218,48 +218,48 @@ SCENARIO("the underwater tracker through the board loop on UW-003", "[host_sim][
     CHECK(k3.rmse_depth_m.mean * 3.0 < direct.rmse_depth_m.mean);
   }
   THEN("the figures do not depend on the number of worker threads") {
-    UwMonteCarloConfig one = mc;
+    SonarMonteCarloConfig one = mc;
     one.jobs = 1;
-    const UwScenarioConfig sc = uw003_config();
-    kestrel::UnderwaterTrackerParams p = uw_params_for(sc);
+    const SonarScenarioConfig sc = uw003_config();
+    kestrel::SonarTrackerParams p = sonar_params_for(sc);
     p.gate_k_sigma = 3.0;
-    const UwSummary s1 = summarise_uw(run_uw_monte_carlo(sc, p, one).runs, one.budget_ns);
+    const SonarSummary s1 = summarise_sonar(run_sonar_monte_carlo(sc, p, one).runs, one.budget_ns);
     CHECK(s1.rmse_3d_m.mean == k3.rmse_3d_m.mean);
     CHECK(s1.pooled_c_err_std_mps == k3.pooled_c_err_std_mps);
   }
 }
 
-SCENARIO("the gate-truncation covariance and the depth projection", "[host_sim][end_to_end][uw]") {
-  UwMonteCarloConfig mc;
+SCENARIO("the gate-truncation covariance and the depth projection", "[host_sim][end_to_end][sonar]") {
+  SonarMonteCarloConfig mc;
   mc.runs = 40;
   mc.jobs = 2;
   const auto summary = [&](const char* scenario, bool truncation, bool projection) {
-    const UwScenarioConfig sc = uw_config_by_name(scenario);
-    kestrel::UnderwaterTrackerParams p = uw_params_for(sc);
+    const SonarScenarioConfig sc = sonar_config_by_name(scenario);
+    kestrel::SonarTrackerParams p = sonar_params_for(sc);
     p.gate_truncation_covariance = truncation;
     p.project_depth = projection;
-    return summarise_uw(run_uw_monte_carlo(sc, p, mc).runs, mc.budget_ns);
+    return summarise_sonar(run_sonar_monte_carlo(sc, p, mc).runs, mc.budget_ns);
   };
   THEN("without outliers the paper's k = 2 gate keeps the position NEES near its 3 degrees of freedom") {
-    // 200 runs: 2.99 with the term, 3.66 without (docs/underwater.md); these
+    // 200 runs: 2.99 with the term, 3.66 without (docs/sonar.md); these
     // 40 give 2.74 and 3.30. Without it the gate's dropped arrivals leave P small.
-    const UwSummary with = summary("uw003-clean", true, true);
-    const UwSummary without = summary("uw003-clean", false, true);
+    const SonarSummary with = summary("uw003-clean", true, true);
+    const SonarSummary without = summary("uw003-clean", false, true);
     CHECK(with.nees.mean > 2.2);
     CHECK(with.nees.mean < 3.2);
     CHECK(without.nees.mean > with.nees.mean + 0.3);
     CHECK(with.rmse_3d_m.mean < without.rmse_3d_m.mean + 0.2);
   }
   THEN("no reported depth leaves the water, where without the projection direct-only runs go above the surface") {
-    const UwScenarioConfig sc = uw_config_by_name("uw003-direct");
+    const SonarScenarioConfig sc = sonar_config_by_name("uw003-direct");
     const auto depth_range = [&](bool projection) {
-      kestrel::UnderwaterTrackerParams p = uw_params_for(sc);
+      kestrel::SonarTrackerParams p = sonar_params_for(sc);
       p.project_depth = projection;
       double lo = 1e9;
       double hi = -1e9;
       for (std::uint64_t seed = 0; seed < 10; ++seed) {
-        const UwRunOutput out = run_uw(generate_uw(sc, seed), p, 1'000'000);
-        for (const UwFrameOutcome& f : out.frames) {
+        const SonarRunOutput out = run_sonar(generate_sonar(sc, seed), p, 1'000'000);
+        for (const SonarFrameOutcome& f : out.frames) {
           if (!f.reported) continue;
           lo = std::min(lo, f.x[2]);
           hi = std::max(hi, f.x[2]);

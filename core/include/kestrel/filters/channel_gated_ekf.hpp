@@ -9,7 +9,7 @@
 // shrinks P as if something had been measured. update_channels() may also
 // widen P for what the gate dropped and keep one component within bounds
 // (the sonar's depth). Same contract as Ekf: kNonFinite and
-// kNotPositiveDefinite leave x and P unchanged. Details: docs/underwater.md,
+// kNotPositiveDefinite leave x and P unchanged. Details: docs/sonar.md,
 // "Filter: a variable subset of channels".
 #pragma once
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The clock of a tracker's accepted frames and its time-fault rules, one
-// copy for every tracker (Tracker, UnderwaterTracker):
+// copy for every tracker (Tracker, SonarTracker):
 //   - a frame earlier than the last accepted one is refused
 //     (kTimeWentBackwards), and one later by more than max_forward_jump_us
 //     is refused (kTimeJumpedForward): a single corrupted time blocks

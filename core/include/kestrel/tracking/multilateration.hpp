@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Robust least-squares multilateration of one TOA frame with a known sound
-// speed: how the underwater tracker starts (paper 003; UW-003 in
+// speed: how the sonar tracker starts (paper 003; UW-003 in
 // docs/scenarios.md). Gauss-Newton on the normalised residuals of the direct
 // and the seabed-reflected arrivals, through the same MultipathToa model the
 // filter uses (so the reflected paths fix depth), from several starting
@@ -9,7 +9,7 @@
 // answer is the start with the most inliers, then the lowest cost;
 // kAmbiguous when another start as good lies far away. Every loop is bounded
 // by compile-time maxima. Why raw residuals, and the known limits:
-// docs/underwater.md, "Initialisation: robust multilateration".
+// docs/sonar.md, "Initialisation: robust multilateration".
 #pragma once
 
 #include <cstdint>

@@ -40,7 +40,7 @@ enum class ToaPath : std::uint8_t {
 };
 
 /// One time-of-arrival at a beacon.
-struct ToaArrival {
+struct SonarArrival {
   std::uint32_t time_of_flight_ns;  ///< Travel time, nanoseconds.
   std::uint8_t beacon_id;           ///< Index into the beacon table of the sonar config.
   ToaPath path;                     ///< Direct or seabed-reflected.
@@ -57,7 +57,7 @@ struct PclCandidate {
 /// over a frame's items; a frame announcing more is refused by the decoder
 /// (kTooManyCandidates) after keeping the first kMax items.
 inline constexpr std::size_t kMaxRadarPlots = 32;
-inline constexpr std::size_t kMaxToaArrivals = 16;
+inline constexpr std::size_t kMaxSonarArrivals = 16;
 inline constexpr std::size_t kMaxPclCandidates = 64;
 
 /// A decoded frame: a tagged union over the three sensor kinds.
@@ -67,7 +67,7 @@ struct Frame {
   std::int64_t t_us;    ///< Measurement time, microseconds on the sensor clock.
   union {
     RadarPlot radar[kMaxRadarPlots];
-    ToaArrival sonar[kMaxToaArrivals];
+    SonarArrival sonar[kMaxSonarArrivals];
     PclCandidate pcl[kMaxPclCandidates];
   };
 };
@@ -76,7 +76,7 @@ struct Frame {
 constexpr std::size_t capacity_of(FrameKind kind) {
   switch (kind) {
     case FrameKind::kRadar: return kMaxRadarPlots;
-    case FrameKind::kSonar: return kMaxToaArrivals;
+    case FrameKind::kSonar: return kMaxSonarArrivals;
     case FrameKind::kPcl: return kMaxPclCandidates;
   }
   return 0;

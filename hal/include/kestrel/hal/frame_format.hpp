@@ -56,7 +56,7 @@ inline constexpr std::size_t kRadarHasRangeRateOffset = 14;  ///< u8 has_range_r
 inline constexpr std::size_t kRadarSensorIdOffset = 15;      ///< u8 sensor_id.
 inline constexpr std::size_t kRadarRecordSize = 16;
 
-/// Sonar record (ToaArrival), offsets from the start of the record.
+/// Sonar record (SonarArrival), offsets from the start of the record.
 inline constexpr std::size_t kSonarTimeOfFlightOffset = 0;  ///< u32 time_of_flight_ns, nanoseconds.
 inline constexpr std::size_t kSonarBeaconIdOffset = 4;      ///< u8 beacon_id.
 inline constexpr std::size_t kSonarPathOffset = 5;          ///< u8 path, ToaPath: 0 direct, 1 reflected.
@@ -106,19 +106,19 @@ constexpr std::size_t frame_size(FrameKind kind, std::size_t count) {
 /// transmit buffers with this.
 inline constexpr std::size_t kMaxEncodedFrameBytes = [] {
   std::size_t m = frame_size(FrameKind::kRadar, kMaxRadarPlots);
-  if (frame_size(FrameKind::kSonar, kMaxToaArrivals) > m) m = frame_size(FrameKind::kSonar, kMaxToaArrivals);
+  if (frame_size(FrameKind::kSonar, kMaxSonarArrivals) > m) m = frame_size(FrameKind::kSonar, kMaxSonarArrivals);
   if (frame_size(FrameKind::kPcl, kMaxPclCandidates) > m) m = frame_size(FrameKind::kPcl, kMaxPclCandidates);
   return m;
 }();
 
 static_assert(kPayloadPrefixSize + kMaxRadarPlots * kRadarRecordSize <= kMaxPayloadBytes);
-static_assert(kPayloadPrefixSize + kMaxToaArrivals * kSonarRecordSize <= kMaxPayloadBytes);
+static_assert(kPayloadPrefixSize + kMaxSonarArrivals * kSonarRecordSize <= kMaxPayloadBytes);
 static_assert(kPayloadPrefixSize + kMaxPclCandidates * kPclRecordSize <= kMaxPayloadBytes);
 static_assert(kMaxEncodedFrameBytes <= kMaxFrameBytes);
 // The largest record count any accepted payload can hold fits the u16 count.
 static_assert((kMaxPayloadBytes - kPayloadPrefixSize) / kSonarRecordSize <= 0xFFFFu);
 // Frame::count is a u16 too.
-static_assert(kMaxPclCandidates <= 0xFFFFu && kMaxRadarPlots <= 0xFFFFu && kMaxToaArrivals <= 0xFFFFu);
+static_assert(kMaxPclCandidates <= 0xFFFFu && kMaxRadarPlots <= 0xFFFFu && kMaxSonarArrivals <= 0xFFFFu);
 
 // --------------------------------------------- little-endian field access --
 // The callers index inside spans whose size they have checked; these helpers

@@ -18,13 +18,13 @@
 #include "kestrel/scalar/scalar_traits.hpp"
 #include "kestrel/status.hpp"
 #include "kestrel/tracking/toa_scan.hpp"
-#include "kestrel/tracking/underwater_tracker.hpp"
+#include "kestrel/tracking/sonar_tracker.hpp"
 
 namespace kestrel::hal {
 
 /// Most beacons a sonar frame can name with both paths (16 arrivals / 2).
-inline constexpr std::size_t kMaxSonarBeacons = kMaxToaArrivals / 2;
-static_assert(kMaxSonarBeacons == static_cast<std::size_t>(UnderwaterTrackerParams::kMaxBeacons),
+inline constexpr std::size_t kMaxSonarBeacons = kMaxSonarArrivals / 2;
+static_assert(kMaxSonarBeacons == static_cast<std::size_t>(SonarTrackerParams::kMaxBeacons),
               "the tracker parameters hold one entry per beacon a frame can name");
 
 /// One beacon of the installation.
@@ -35,7 +35,7 @@ struct SonarBeacon {
 };
 
 /// Installation geometry of a sonar front end: the beacon table (indexed by
-/// ToaArrival::beacon_id), the seabed depth and the arrival-time noise.
+/// SonarArrival::beacon_id), the seabed depth and the arrival-time noise.
 struct SonarConfig {
   SonarBeacon beacons[kMaxSonarBeacons] = {
       {0, 0, 0}, {2000000, 0, 0}, {0, 2000000, 0}, {2000000, 2000000, 0}};  ///< UW-003's beacons (docs/scenarios.md).
@@ -46,8 +46,8 @@ struct SonarConfig {
 
 /// The tracker parameters with the installation's geometry filled in
 /// (everything else keeps the values already in `base`).
-inline UnderwaterTrackerParams sonar_tracker_params(const SonarConfig& cfg,
-                                                    UnderwaterTrackerParams base = UnderwaterTrackerParams{}) {
+inline SonarTrackerParams sonar_tracker_params(const SonarConfig& cfg,
+                                                    SonarTrackerParams base = SonarTrackerParams{}) {
   const std::size_t n = cfg.beacon_count < kMaxSonarBeacons ? cfg.beacon_count : kMaxSonarBeacons;
   base.beacon_count = static_cast<std::uint8_t>(n);
   for (std::size_t i = 0; i < kMaxSonarBeacons; ++i) {
@@ -83,7 +83,7 @@ template <class Scalar, std::size_t kCapacity>
   scan.count = n;
   for (std::size_t i = 0; i < kCapacity; ++i) {
     if (i >= n) break;
-    const ToaArrival& a = frame.sonar[i];
+    const SonarArrival& a = frame.sonar[i];
     scan.arrivals[i].toa_s = T::from_ratio(static_cast<std::int64_t>(a.time_of_flight_ns), 1000000000LL);
     scan.arrivals[i].beacon = a.beacon_id;
     scan.arrivals[i].path = a.path == ToaPath::kDirect ? ArrivalPath::kDirect : ArrivalPath::kReflected;

@@ -9,7 +9,7 @@
 // that. The reflected Jacobian row's depth entry has the opposite sign to
 // the direct one (the image moves up when the target moves down), which is
 // what makes depth observable with every beacon at the surface
-// (docs/underwater.md).
+// (docs/sonar.md).
 #pragma once
 
 #include <cstddef>

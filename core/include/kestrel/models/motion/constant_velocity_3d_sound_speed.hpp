@@ -7,7 +7,7 @@
 // the effective sound speed c is a random walk whose variance grows by
 // qc * T (qc in (m/s)^2/s, i.e. a sigma of sqrt(qc) m/s per sqrt(s)).
 // The paper prints only "F for constant velocity" and an unnamed Q; these
-// two noise forms are the project's choice (docs/underwater.md).
+// two noise forms are the project's choice (docs/sonar.md).
 #pragma once
 
 #include "kestrel/math/eigen.hpp"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 
 #include <array>
 #include <cmath>
@@ -19,22 +19,22 @@ namespace kestrel::sim {
 namespace {
 
 /// UW-003 has four beacons: the tracker's channel table is sized for them.
-constexpr int kUwBeacons = 4;
-using UwTracker = UnderwaterTracker<double, kUwBeacons>;
+constexpr int kSonarBeacons = 4;
+using DoubleSonarTracker = SonarTracker<double, kSonarBeacons>;
 
 }  // namespace
 
-std::vector<std::uint8_t> encode_uw_stream(const UwScenarioRun& run) {
+std::vector<std::uint8_t> encode_sonar_stream(const SonarScenarioRun& run) {
   std::vector<std::uint8_t> bytes;
-  for (const UwFrameRecord& f : run.frames) append_encoded(f.wire, bytes);
+  for (const SonarFrameRecord& f : run.frames) append_encoded(f.wire, bytes);
   return bytes;
 }
 
-UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario, const UnderwaterTrackerParams& base) {
-  if (scenario.beacons_m.size() > static_cast<std::size_t>(kUwBeacons)) {
+SonarTrackerParams sonar_params_for(const SonarScenarioConfig& scenario, const SonarTrackerParams& base) {
+  if (scenario.beacons_m.size() > static_cast<std::size_t>(kSonarBeacons)) {
     throw std::invalid_argument("the UW runner is built for at most 4 beacons");
   }
-  UnderwaterTrackerParams p = base;
+  SonarTrackerParams p = base;
   p.beacon_count = static_cast<std::uint8_t>(scenario.beacons_m.size());
   for (std::size_t i = 0; i < scenario.beacons_m.size(); ++i) {
     for (std::size_t a = 0; a < 3; ++a) p.beacons_m[i][a] = scenario.beacons_m[i][a];
@@ -44,19 +44,19 @@ UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario, const Un
   return p;
 }
 
-UwRunOutput run_uw(const UwScenarioRun& run, const UnderwaterTrackerParams& params, std::uint64_t budget_ns) {
-  UwRunOutput out = run_uw_stream(encode_uw_stream(run), params, budget_ns);
+SonarRunOutput run_sonar(const SonarScenarioRun& run, const SonarTrackerParams& params, std::uint64_t budget_ns) {
+  SonarRunOutput out = run_sonar_stream(encode_sonar_stream(run), params, budget_ns);
   if (out.frames.size() != run.frames.size()) throw std::runtime_error("sonar stream ended early");
   return out;
 }
 
-UwRunOutput run_uw_stream(std::vector<std::uint8_t> stream, const UnderwaterTrackerParams& params,
+SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTrackerParams& params,
                           std::uint64_t budget_ns) {
-  using Report = UwTracker::Report;
+  using Report = DoubleSonarTracker::Report;
   using Sink = host::MemorySink<Report>;
-  using Runner = hal::Runner<host::Feed, host::Clock, UwTracker, hal::SonarAdapter, Sink>;
+  using Runner = hal::Runner<host::Feed, host::Clock, DoubleSonarTracker, hal::SonarAdapter, Sink>;
 
-  auto tracker = std::make_unique<UwTracker>(make_underwater_tracker<double, kUwBeacons>(params));
+  auto tracker = std::make_unique<DoubleSonarTracker>(make_sonar_tracker<double, kSonarBeacons>(params));
   // Every poll that does not return kNoData consumes at least one byte.
   const std::size_t max_polls = stream.size() + 1;
   host::StreamFileFeed feed(std::move(stream));
@@ -65,18 +65,18 @@ UwRunOutput run_uw_stream(std::vector<std::uint8_t> stream, const UnderwaterTrac
   const hal::SonarAdapter adapter;
   auto runner = std::make_unique<Runner>(feed, clock, *tracker, adapter, sink, budget_ns);
 
-  UwRunOutput out;
+  SonarRunOutput out;
   for (std::size_t k = 0; k < max_polls; ++k) {
     const std::size_t first = sink.size();
     const std::uint32_t steps_before = runner->stats().steps;
-    UwFrameOutcome f;
+    SonarFrameOutcome f;
     f.status = runner->poll_once();
     if (f.status == Status::kNoData) break;
     f.stepped = runner->stats().steps != steps_before;
     f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
     f.t_s = f.stepped ? static_cast<double>(runner->last_frame().t_us) * 1e-6 : std::nan("");
     if (f.stepped) {
-      const UnderwaterStepStats& st = tracker->last_step();
+      const SonarStepStats& st = tracker->last_step();
       f.initialised = st.initialised;
       f.predict_only = st.predict_only;
       f.present = st.present;

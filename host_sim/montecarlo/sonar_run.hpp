@@ -2,8 +2,8 @@
 // One UW run through the board loop (docs/tracking.md), and Monte Carlo over
 // seeds. The scenario's sonar wire frames are encoded into a byte stream and
 // driven exactly as a board drives them: host::StreamFileFeed ->
-// hal::SonarAdapter (nanoseconds to seconds) -> UnderwaterTracker::step
-// (core/include/kestrel/tracking/underwater_tracker.hpp) -> host::MemorySink,
+// hal::SonarAdapter (nanoseconds to seconds) -> SonarTracker::step
+// (core/include/kestrel/tracking/sonar_tracker.hpp) -> host::MemorySink,
 // inside hal::Runner and timed by host::SteadyClock. Per frame it keeps the
 // estimate, its covariance and which channels were fused or gated, so the
 // metrics can compare the gate with the true outliers.
@@ -17,14 +17,14 @@
 
 #include "kestrel/hal/runner.hpp"
 #include "kestrel/status.hpp"
-#include "kestrel/tracking/underwater_tracker.hpp"
+#include "kestrel/tracking/sonar_tracker.hpp"
 #include "scenarios/uw003.hpp"
 
 namespace kestrel::sim {
 
-struct UwFrameOutcome {
+struct SonarFrameOutcome {
   Status status = Status::kOk;   ///< Runner::poll_once() result.
-  bool stepped = false;          ///< Reached UnderwaterTracker::step.
+  bool stepped = false;          ///< Reached SonarTracker::step.
   std::uint64_t step_ns = 0;     ///< Adapter + step time, ns.
   double t_s = 0.0;              ///< The frame's wire time, s (NaN if it did not reach the tracker).
   bool reported = false;         ///< The tracker published an estimate.
@@ -40,27 +40,27 @@ struct UwFrameOutcome {
   double nis = 0.0;              ///< NIS over the fused channels.
 };
 
-struct UwRunOutput {
-  std::vector<UwFrameOutcome> frames;  ///< One per wire frame, in order.
+struct SonarRunOutput {
+  std::vector<SonarFrameOutcome> frames;  ///< One per wire frame, in order.
   hal::RunnerStats stats;
 };
 
 /// Tracker parameters for a scenario: the installation (beacons, seabed,
 /// TOA sigma) from the scenario, everything else from `base`.
-UnderwaterTrackerParams uw_params_for(const UwScenarioConfig& scenario,
-                                      const UnderwaterTrackerParams& base = UnderwaterTrackerParams{});
+SonarTrackerParams sonar_params_for(const SonarScenarioConfig& scenario,
+                                      const SonarTrackerParams& base = SonarTrackerParams{});
 
 /// Run the tracker with `params` over the run's frames (std::runtime_error
 /// if the Runner does not see exactly one frame per wire frame).
-UwRunOutput run_uw(const UwScenarioRun& run, const UnderwaterTrackerParams& params, std::uint64_t budget_ns);
+SonarRunOutput run_sonar(const SonarScenarioRun& run, const SonarTrackerParams& params, std::uint64_t budget_ns);
 
 /// Run the tracker with `params` over a sonar byte stream (any bytes: one
 /// outcome per Runner frame, malformed or refused ones included, until the
 /// stream is used up).
-UwRunOutput run_uw_stream(std::vector<std::uint8_t> stream, const UnderwaterTrackerParams& params,
+SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTrackerParams& params,
                           std::uint64_t budget_ns);
 
 /// The run's frames as the wire byte stream a sonar sends.
-std::vector<std::uint8_t> encode_uw_stream(const UwScenarioRun& run);
+std::vector<std::uint8_t> encode_sonar_stream(const SonarScenarioRun& run);
 
 }  // namespace kestrel::sim

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// The underwater (sonar, TOA) tracker driven by arbitrary bytes, for
-// libFuzzer (underwater_tracker_fuzz.cpp) and for the regression test that
+// The sonar (TOA) tracker driven by arbitrary bytes, for
+// libFuzzer (sonar_tracker_fuzz.cpp) and for the regression test that
 // replays the corpus and a seeded batch of inputs under the normal build
 // (tests/core/tracking/tracker_fuzz_regression_test.cpp).
 //
 // The bytes are read as a sequence of wire sonar frames (hal::Frame), each
 // converted by the board adapter (hal::SonarAdapter) and stepped by the
 // UW-003 tracker (four beacons, geometry from hal::SonarConfig's defaults)
-// in double and float (the scalars underwater_tracker.hpp is built for).
+// in double and float (the scalars sonar_tracker.hpp is built for).
 // Per frame, one op byte: bits 0-1 choose the time step (fuzz_bytes.hpp:
 // the next 1 s ping; a signed step of up to +-32 s; any int64 time; a gap of
 // up to 49 days), bits 2-5 the arrival count (0-15, over the scan capacity
@@ -47,23 +47,23 @@
 #include "kestrel/hal/sonar_adapter.hpp"
 #include "kestrel/math/finite.hpp"
 #include "kestrel/math/positive_definite.hpp"
-#include "kestrel/tracking/underwater_tracker.hpp"
+#include "kestrel/tracking/sonar_tracker.hpp"
 
 namespace kestrel::test {
 
-inline constexpr std::int64_t kUwFuzzPeriodUs = 1000000;
-inline constexpr int kUwFuzzBeacons = 4;
-inline constexpr std::size_t kUwFuzzArrivals = 2 * kUwFuzzBeacons;
+inline constexpr std::int64_t kSonarFuzzPeriodUs = 1000000;
+inline constexpr int kSonarFuzzBeacons = 4;
+inline constexpr std::size_t kSonarFuzzArrivals = 2 * kSonarFuzzBeacons;
 // A fix, a few tracked pings, a reacquisition (3 empty frames) and a
 // restart after a gap fit; more frames only repeat them. One ordinary ping
 // costs about 1.2 ms per scalar under ASan at -O1, a failing multilateration
 // several times that.
-inline constexpr int kUwFuzzMaxFrames = 24;
+inline constexpr int kSonarFuzzMaxFrames = 24;
 
 /// The target's travel time to a beacon at frame k, s: a slow straight
 /// line at 40-60 m depth inside the UW-003 square, c = 1500 m/s.
-inline double uw_target_toa_s(const UnderwaterTrackerParams& p, int beacon, bool reflected, int frame_index) {
-  const double t = static_cast<double>(frame_index) * 1.0e-6 * static_cast<double>(kUwFuzzPeriodUs);
+inline double sonar_target_toa_s(const SonarTrackerParams& p, int beacon, bool reflected, int frame_index) {
+  const double t = static_cast<double>(frame_index) * 1.0e-6 * static_cast<double>(kSonarFuzzPeriodUs);
   const double x = 700.0 + 1.2 * t;
   const double y = 900.0 + 0.8 * t;
   const double z = 40.0 + 0.05 * t;
@@ -74,11 +74,11 @@ inline double uw_target_toa_s(const UnderwaterTrackerParams& p, int beacon, bool
 }
 
 /// Next frame from the bytes; false when they are used up.
-inline bool next_sonar_frame(ByteReader& r, std::int64_t& t_us, int frame_index, const UnderwaterTrackerParams& p,
+inline bool next_sonar_frame(ByteReader& r, std::int64_t& t_us, int frame_index, const SonarTrackerParams& p,
                              hal::Frame& f) {
   if (r.empty()) return false;
   const std::uint8_t op = r.u8();
-  step_time(r, op, kUwFuzzPeriodUs, t_us);
+  step_time(r, op, kSonarFuzzPeriodUs, t_us);
   f = hal::Frame{};
   f.kind = hal::FrameKind::kSonar;
   f.t_us = t_us;
@@ -86,14 +86,14 @@ inline bool next_sonar_frame(ByteReader& r, std::int64_t& t_us, int frame_index,
   const int start = op >> 6;
   for (std::uint16_t i = 0; i < f.count; ++i) {
     const std::uint8_t b = r.u8();
-    hal::ToaArrival& a = f.sonar[i];
-    a = hal::ToaArrival{};
+    hal::SonarArrival& a = f.sonar[i];
+    a = hal::SonarArrival{};
     if ((b & 1u) == 0) {
-      const int beacon = (start + i) % kUwFuzzBeacons;
-      const bool reflected = ((i / kUwFuzzBeacons) & 1) != 0;
+      const int beacon = (start + i) % kSonarFuzzBeacons;
+      const bool reflected = ((i / kSonarFuzzBeacons) & 1) != 0;
       const double noise_s = 2.0e-4 * (static_cast<double>((b >> 1) & 31u) - 15.5);
       const double late_s = (b >> 6) == 3 ? 0.040 : 0.0;
-      const double toa_s = uw_target_toa_s(p, beacon, reflected, frame_index) + noise_s + late_s;
+      const double toa_s = sonar_target_toa_s(p, beacon, reflected, frame_index) + noise_s + late_s;
       a.time_of_flight_ns = static_cast<std::uint32_t>(std::llround(toa_s * 1.0e9));
       a.beacon_id = static_cast<std::uint8_t>(beacon);
       a.path = reflected ? hal::ToaPath::kReflected : hal::ToaPath::kDirect;
@@ -112,7 +112,7 @@ inline bool next_sonar_frame(ByteReader& r, std::int64_t& t_us, int frame_index,
 /// The state, the last update's diagnostics and the counters, but for the
 /// per-status refusal counts, are the same bit for bit (NaN included).
 template <class Tracker>
-bool same_underwater_state(const Tracker& a, const Tracker& b) {
+bool same_sonar_state(const Tracker& a, const Tracker& b) {
   const auto same_bits = [](const auto& u, const auto& v) {
     return std::memcmp(u.data(), v.data(), sizeof(*u.data()) * static_cast<std::size_t>(u.size())) == 0;
   };
@@ -127,27 +127,27 @@ bool same_underwater_state(const Tracker& a, const Tracker& b) {
       da.fused != db.fused || da.status != db.status) {
     return false;
   }
-  const UnderwaterCounters& ca = a.counters();
-  const UnderwaterCounters& cb = b.counters();
+  const SonarCounters& ca = a.counters();
+  const SonarCounters& cb = b.counters();
   return ca.frames_ok == cb.frames_ok && ca.initialisations == cb.initialisations && ca.arrivals == cb.arrivals &&
          ca.fused == cb.fused && ca.gated_out == cb.gated_out && ca.predict_only == cb.predict_only;
 }
 
 /// Runs the bytes through one scalar's tracker; nullptr or what broke.
 template <class Scalar>
-const char* check_underwater_tracker_invariants_for(std::span<const std::uint8_t> in, FuzzTally& tally) {
-  using Tracker = UnderwaterTracker<Scalar, kUwFuzzBeacons>;
-  const UnderwaterTrackerParams p = hal::sonar_tracker_params(hal::SonarConfig{});
+const char* check_sonar_tracker_invariants_for(std::span<const std::uint8_t> in, FuzzTally& tally) {
+  using Tracker = SonarTracker<Scalar, kSonarFuzzBeacons>;
+  const SonarTrackerParams p = hal::sonar_tracker_params(hal::SonarConfig{});
   // Heap, not stack, as the other harnesses: a tracker is a few KiB.
-  auto tracker = std::make_unique<Tracker>(make_underwater_tracker<Scalar, kUwFuzzBeacons>(p));
+  auto tracker = std::make_unique<Tracker>(make_sonar_tracker<Scalar, kSonarFuzzBeacons>(p));
   auto before = std::make_unique<Tracker>(*tracker);
   auto frame = std::make_unique<hal::Frame>();
   const hal::SonarAdapter adapter;
   typename Tracker::Scan scan;
   ByteReader r(in);
   std::int64_t t_us = 0;
-  for (int k = 0; k < kUwFuzzMaxFrames && next_sonar_frame(r, t_us, k, p, *frame); ++k) {
-    const std::size_t kept = frame->count < kUwFuzzArrivals ? frame->count : kUwFuzzArrivals;
+  for (int k = 0; k < kSonarFuzzMaxFrames && next_sonar_frame(r, t_us, k, p, *frame); ++k) {
+    const std::size_t kept = frame->count < kSonarFuzzArrivals ? frame->count : kSonarFuzzArrivals;
     bool bad_path = false;
     for (std::size_t i = 0; i < kept; ++i) {
       bad_path = bad_path || static_cast<std::uint8_t>(frame->sonar[i].path) > 1u;
@@ -167,7 +167,7 @@ const char* check_underwater_tracker_invariants_for(std::span<const std::uint8_t
     tally.reports += static_cast<int>(tracker->reports().size());
     if (s != Status::kOk) {
       if (!tracker->reports().empty()) return "a refused frame published reports";
-      if (!same_underwater_state(*tracker, *before)) {
+      if (!same_sonar_state(*tracker, *before)) {
         // kNonFinite is a frame check (an arrival time) and a filter status.
         if (s == Status::kMalformedFrame || s == Status::kOutOfRange || s == Status::kTimeWentBackwards ||
             s == Status::kTimeJumpedForward) {
@@ -197,11 +197,11 @@ const char* check_underwater_tracker_invariants_for(std::span<const std::uint8_t
 }
 
 /// All scalars; nullptr or what broke. `tally` (optional) sums what the run met.
-inline const char* check_underwater_tracker_invariants(std::span<const std::uint8_t> in, FuzzTally* tally = nullptr) {
+inline const char* check_sonar_tracker_invariants(std::span<const std::uint8_t> in, FuzzTally* tally = nullptr) {
   FuzzTally local;
   FuzzTally& t = tally != nullptr ? *tally : local;
-  if (const char* why = check_underwater_tracker_invariants_for<double>(in, t)) return why;
-  return check_underwater_tracker_invariants_for<float>(in, t);
+  if (const char* why = check_sonar_tracker_invariants_for<double>(in, t)) return why;
+  return check_sonar_tracker_invariants_for<float>(in, t);
 }
 
 }  // namespace kestrel::test

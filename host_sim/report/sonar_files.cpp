@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "report/uw_files.hpp"
+#include "report/sonar_files.hpp"
 
 #include <fstream>
 #include <stdexcept>
@@ -22,12 +22,12 @@ const char* path_name(hal::ToaPath p) { return p == hal::ToaPath::kDirect ? "dir
 
 }  // namespace
 
-void write_uw_runs_csv(const std::filesystem::path& path, const std::vector<UwRunMetrics>& runs) {
+void write_sonar_runs_csv(const std::filesystem::path& path, const std::vector<SonarRunMetrics>& runs) {
   std::ofstream out = open_out(path);
   out << "seed,init_frame,scored_frames,rmse_3d_m,rmse_h_m,rmse_depth_m,peak_3d_m,nees,c_err_mean_mps,"
          "c_err_std_mps,arrivals,outliers,outliers_gated,good_gated,gated,predict_only,reinitialisations,"
          "frames_refused,depth_reflections\n";
-  for (const UwRunMetrics& r : runs) {
+  for (const SonarRunMetrics& r : runs) {
     out << r.seed << ',' << r.init_frame << ',' << r.scored_frames << ',' << csv_cell(r.rmse_3d_m) << ','
         << csv_cell(r.rmse_h_m) << ',' << csv_cell(r.rmse_depth_m) << ',' << csv_cell(r.peak_3d_m) << ','
         << csv_cell(r.nees) << ',' << csv_cell(r.c_err_mean_mps) << ',' << csv_cell(r.c_err_std_mps) << ','
@@ -38,7 +38,7 @@ void write_uw_runs_csv(const std::filesystem::path& path, const std::vector<UwRu
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
-void write_uw_steps_csv(const std::filesystem::path& path, const UwSummary& s) {
+void write_sonar_steps_csv(const std::filesystem::path& path, const SonarSummary& s) {
   std::ofstream out = open_out(path);
   out << "frame,runs_scored,rmse_3d_m,rmse_h_m,rmse_depth_m,c_err_rms_mps\n";
   for (std::size_t k = 0; k < s.step_runs.size(); ++k) {
@@ -48,18 +48,18 @@ void write_uw_steps_csv(const std::filesystem::path& path, const UwSummary& s) {
   if (!out) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
-void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& run, const UwRunOutput& out) {
+void write_sonar_run_csvs(const std::filesystem::path& dir, const SonarScenarioRun& run, const SonarRunOutput& out) {
   const std::size_t n = std::min(run.frames.size(), out.frames.size());
   // The truth `generate` writes beside a stream: `replay --truth` takes either.
-  write_uw_truth_csv(dir / "uw_truth.csv", run);
+  write_sonar_truth_csv(dir / "sonar_truth.csv", run);
   {
-    std::ofstream f = open_out(dir / "uw_arrivals.csv");
+    std::ofstream f = open_out(dir / "sonar_arrivals.csv");
     f << "frame,time_s,beacon,path,true_toa_s,toa_s,wire_toa_ns,outlier,outlier_ms,fused,gated\n";
     for (std::size_t k = 0; k < n; ++k) {
-      const UwFrameRecord& fr = run.frames[k];
-      const UwFrameOutcome& o = out.frames[k];
+      const SonarFrameRecord& fr = run.frames[k];
+      const SonarFrameOutcome& o = out.frames[k];
       for (std::size_t i = 0; i < fr.arrivals.size(); ++i) {
-        const UwArrivalRecord& a = fr.arrivals[i];
+        const SonarArrivalRecord& a = fr.arrivals[i];
         const std::uint32_t bit = 1u << (2u * a.beacon + static_cast<std::uint32_t>(a.path));
         f << k << ',' << csv_cell(run.truth[k].t_s) << ',' << static_cast<int>(a.beacon) << ',' << path_name(a.path)
           << ',' << csv_cell(a.true_toa_s) << ',' << csv_cell(a.toa_s) << ',' << fr.wire.sonar[i].time_of_flight_ns
@@ -70,17 +70,17 @@ void write_uw_run_csvs(const std::filesystem::path& dir, const UwScenarioRun& ru
   }
   std::vector<double> time_s;
   for (std::size_t k = 0; k < n; ++k) time_s.push_back(run.truth[k].t_s);
-  write_uw_track_csv(dir / "uw_track.csv", out.frames, time_s);
+  write_sonar_track_csv(dir / "sonar_track.csv", out.frames, time_s);
 }
 
-void write_uw_track_csv(const std::filesystem::path& path, const std::vector<UwFrameOutcome>& frames,
+void write_sonar_track_csv(const std::filesystem::path& path, const std::vector<SonarFrameOutcome>& frames,
                         const std::vector<double>& time_s) {
   const std::size_t n = std::min(frames.size(), time_s.size());
   std::ofstream f = open_out(path);
   f << "frame,time_s,status,reported,initialised,predict_only,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"
        "sd_x_m,sd_y_m,sd_z_m,sd_vx_mps,sd_vy_mps,sd_vz_mps,sd_c_mps,fused,gated,nis,step_ns\n";
   for (std::size_t k = 0; k < n; ++k) {
-    const UwFrameOutcome& o = frames[k];
+    const SonarFrameOutcome& o = frames[k];
     f << k << ',' << csv_cell(time_s[k]) << ',' << to_string(o.status) << ',' << (o.reported ? 1 : 0) << ','
       << (o.initialised ? 1 : 0) << ',' << (o.predict_only ? 1 : 0);
     for (std::size_t i = 0; i < 7; ++i) f << ',' << (o.reported ? csv_cell(o.x[i]) : "");
@@ -95,9 +95,9 @@ void write_uw_track_csv(const std::filesystem::path& path, const std::vector<UwF
   if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
-nlohmann::json uw_params_json(const UnderwaterTrackerParams& p) {
+nlohmann::json sonar_params_json(const SonarTrackerParams& p) {
   nlohmann::json beacons = nlohmann::json::array();
-  for (int i = 0; i < p.beacon_count && i < UnderwaterTrackerParams::kMaxBeacons; ++i) {
+  for (int i = 0; i < p.beacon_count && i < SonarTrackerParams::kMaxBeacons; ++i) {
     beacons.push_back({p.beacons_m[i][0], p.beacons_m[i][1], p.beacons_m[i][2]});
   }
   return {{"beacons_m", beacons},
@@ -118,7 +118,7 @@ nlohmann::json uw_params_json(const UnderwaterTrackerParams& p) {
           {"project_depth", p.project_depth}};
 }
 
-nlohmann::json uw_scenario_json(const UwScenarioConfig& sc) {
+nlohmann::json sonar_scenario_json(const SonarScenarioConfig& sc) {
   nlohmann::json beacons = nlohmann::json::array();
   for (const auto& b : sc.beacons_m) beacons.push_back({b[0], b[1], b[2]});
   return {{"name", sc.name},
@@ -135,12 +135,12 @@ nlohmann::json uw_scenario_json(const UwScenarioConfig& sc) {
           {"accel_sigma_mps2", sc.accel_sigma_mps2}};
 }
 
-nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrackerParams& params,
-                               const UwMonteCarloConfig& config, const UwSummary& s) {
+nlohmann::json sonar_summary_json(const SonarScenarioConfig& sc, const SonarTrackerParams& params,
+                               const SonarMonteCarloConfig& config, const SonarSummary& s) {
   nlohmann::json j;
-  j["schema"] = "kestrel-sim-uw-summary/1";
-  j["scenario"] = uw_scenario_json(sc);
-  j["tracker"] = uw_params_json(params);
+  j["schema"] = "kestrel-sim-sonar-summary/1";
+  j["scenario"] = sonar_scenario_json(sc);
+  j["tracker"] = sonar_params_json(params);
   j["runs"] = s.runs;
   j["seeds"] = {config.base_seed, config.base_seed + config.runs - 1};
   j["rmse_3d_m"] = interval_json(s.rmse_3d_m);
@@ -171,8 +171,8 @@ nlohmann::json uw_summary_json(const UwScenarioConfig& sc, const UnderwaterTrack
   return j;
 }
 
-bool plot_uw(const std::filesystem::path& dir, const std::string& title) {
-  return run_named_plot_script("uw_plots.py", {"--dir", dir.string(), "--title", title});
+bool plot_sonar(const std::filesystem::path& dir, const std::string& title) {
+  return run_named_plot_script("sonar_plots.py", {"--dir", dir.string(), "--title", title});
 }
 
 }  // namespace kestrel::sim

@@ -20,13 +20,13 @@
 #include <vector>
 
 #include "metrics/monte_carlo_stats.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 #include "scenarios/uw003.hpp"
 #include "timing/step_timing.hpp"
 
 namespace kestrel::sim {
 
-struct UwRunMetrics {
+struct SonarRunMetrics {
   std::uint64_t seed = 0;
   int init_frame = -1;              ///< Frame of the first fix, -1 if none.
   std::size_t scored_frames = 0;
@@ -51,9 +51,9 @@ struct UwRunMetrics {
   std::vector<std::uint64_t> step_ns;
 };
 
-UwRunMetrics score_uw_run(const UwScenarioRun& run, const UwRunOutput& out);
+SonarRunMetrics score_sonar_run(const SonarScenarioRun& run, const SonarRunOutput& out);
 
-struct UwSummary {
+struct SonarSummary {
   std::size_t runs = 0;
   MeanCi rmse_3d_m, rmse_h_m, rmse_depth_m, peak_3d_m, nees, c_err_std_mps, c_err_mean_mps;
   double pooled_c_err_std_mps = 0.0;   ///< Std of c_hat - c over every scored frame of every run.
@@ -67,24 +67,24 @@ struct UwSummary {
   StepTiming timing;
 };
 
-UwSummary summarise_uw(const std::vector<UwRunMetrics>& runs, std::uint64_t budget_ns);
+SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint64_t budget_ns);
 
-struct UwMonteCarloConfig {
+struct SonarMonteCarloConfig {
   std::size_t runs = 200;
   std::uint64_t base_seed = 0;   ///< Run i uses seed base_seed + i.
   unsigned jobs = 1;
   std::uint64_t budget_ns = 1'000'000;
 };
 
-struct UwMonteCarloResult {
-  std::vector<UwRunMetrics> runs;  ///< In seed order.
-  UwScenarioRun first_run;         ///< Run 0's truth and frames (for the CSVs and plots).
-  UwRunOutput first_output;        ///< Run 0's tracker output.
+struct SonarMonteCarloResult {
+  std::vector<SonarRunMetrics> runs;  ///< In seed order.
+  SonarScenarioRun first_run;         ///< Run 0's truth and frames (for the CSVs and plots).
+  SonarRunOutput first_output;        ///< Run 0's tracker output.
 };
 
 /// Runs are independent and each writes its own slot: the figures do not
 /// depend on `jobs` (step times do).
-UwMonteCarloResult run_uw_monte_carlo(const UwScenarioConfig& scenario, const UnderwaterTrackerParams& params,
-                                      const UwMonteCarloConfig& config);
+SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioConfig& scenario, const SonarTrackerParams& params,
+                                      const SonarMonteCarloConfig& config);
 
 }  // namespace kestrel::sim

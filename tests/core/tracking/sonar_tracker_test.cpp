@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Underwater tracker step() (docs/scenarios.md, UW-003): initialisation by
+// Sonar tracker step() (docs/scenarios.md, UW-003): initialisation by
 // multilateration, convergence to the truth with c fixed and no noise, the
 // per-channel gate dropping an injected outlier while keeping the good
 // arrivals, predict-only and re-acquisition (after empty frames, and after
@@ -12,7 +12,7 @@
 
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/hal/sonar_adapter.hpp"
-#include "kestrel/tracking/underwater_tracker.hpp"
+#include "kestrel/tracking/sonar_tracker.hpp"
 #include "support/alloc_guard.hpp"
 
 namespace {
@@ -20,7 +20,7 @@ namespace {
 using kestrel::ArrivalPath;
 using kestrel::ChannelMask;
 using kestrel::Status;
-using Tracker = kestrel::UnderwaterTracker<double, 4>;
+using Tracker = kestrel::SonarTracker<double, 4>;
 using Scan = Tracker::Scan;
 using L = Tracker::Layout;
 
@@ -58,7 +58,7 @@ Scan frame_at(int k, double c = 1500, std::mt19937_64* rng = nullptr, double sig
   return s;
 }
 
-kestrel::UnderwaterTrackerParams uw_params() { return kestrel::UnderwaterTrackerParams{}; }
+kestrel::SonarTrackerParams sonar_params() { return kestrel::SonarTrackerParams{}; }
 
 /// Index of an arrival in frame_at()'s order.
 constexpr std::size_t arrival_index(int beacon, ArrivalPath path) {
@@ -72,12 +72,12 @@ bool same_state(const Tracker& a, const Tracker& b) {
 
 }  // namespace
 
-SCENARIO("with c fixed and no noise the filter converges to the truth", "[uw][tracker]") {
+SCENARIO("with c fixed and no noise the filter converges to the truth", "[sonar][tracker]") {
   GIVEN("noise-free frames of a constant-velocity target with c = 1500 m/s, and a filter told c barely moves") {
-    auto p = uw_params();
+    auto p = sonar_params();
     p.sound_speed_sigma_mps_per_sqrt_s = 1e-4;
     p.accel_sigma_mps2 = 1e-3;
-    Tracker tr = kestrel::make_underwater_tracker<double, 4>(p);
+    Tracker tr = kestrel::make_sonar_tracker<double, 4>(p);
     WHEN("it runs 50 frames") {
       double first_error = 0;
       for (int k = 0; k < 50; ++k) {
@@ -107,7 +107,7 @@ SCENARIO("with c fixed and no noise the filter converges to the truth", "[uw][tr
     }
   }
   GIVEN("the same with 3 ms TOA noise and c = 1501.5 m/s (seeded)") {
-    Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+    Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
     std::mt19937_64 rng(3);
     double sum_e2 = 0;
     for (int k = 0; k < 50; ++k) {
@@ -123,9 +123,9 @@ SCENARIO("with c fixed and no noise the filter converges to the truth", "[uw][tr
   }
 }
 
-SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals", "[uw][tracker][gate]") {
+SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals", "[sonar][tracker][gate]") {
   GIVEN("a tracker that has followed 10 noise-free frames") {
-    Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+    Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
     for (int k = 0; k < 10; ++k) REQUIRE(tr.step(frame_at(k)) == Status::kOk);
     WHEN("frame 10 has beacon 3's reflected arrival 25 ms late") {
       Scan s = frame_at(10);
@@ -147,10 +147,10 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
         // With the gate-truncation covariance off the gated channel is simply
         // removed; with it (the default) x is the same and P gains the term
         // of the next THEN.
-        auto p = uw_params();
+        auto p = sonar_params();
         p.gate_truncation_covariance = false;
-        Tracker plain = kestrel::make_underwater_tracker<double, 4>(p);
-        Tracker twin = kestrel::make_underwater_tracker<double, 4>(p);
+        Tracker plain = kestrel::make_sonar_tracker<double, 4>(p);
+        Tracker twin = kestrel::make_sonar_tracker<double, 4>(p);
         for (int k = 0; k < 10; ++k) {
           REQUIRE(plain.step(frame_at(k)) == Status::kOk);
           REQUIRE(twin.step(frame_at(k)) == Status::kOk);
@@ -171,10 +171,10 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
       THEN("P gains the spread of a good arrival beyond the gate along that channel's direction") {
         // Without outliers so far (1 gated of 88 arrivals) a gated arrival is
         // taken as good: weight 1, excess E[u^2 | |u| > 2] - 1 = 2 k phi(k) / erfc(k / sqrt 2).
-        auto p = uw_params();
+        auto p = sonar_params();
         p.gate_truncation_covariance = false;
-        Tracker plain = kestrel::make_underwater_tracker<double, 4>(p);
-        Tracker dflt = kestrel::make_underwater_tracker<double, 4>(uw_params());
+        Tracker plain = kestrel::make_sonar_tracker<double, 4>(p);
+        Tracker dflt = kestrel::make_sonar_tracker<double, 4>(sonar_params());
         for (int k = 0; k < 10; ++k) {
           REQUIRE(plain.step(frame_at(k)) == Status::kOk);
           REQUIRE(dflt.step(frame_at(k)) == Status::kOk);
@@ -198,9 +198,9 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
       }
     }
     WHEN("the gate is off and frame 10 carries the same outlier") {
-      auto p = uw_params();
+      auto p = sonar_params();
       p.per_channel_gate = false;
-      Tracker ungated = kestrel::make_underwater_tracker<double, 4>(p);
+      Tracker ungated = kestrel::make_sonar_tracker<double, 4>(p);
       for (int k = 0; k < 10; ++k) REQUIRE(ungated.step(frame_at(k)) == Status::kOk);
       Scan s = frame_at(10);
       s.arrivals[arrival_index(3, ArrivalPath::kReflected)].toa_s += 25e-3;
@@ -278,8 +278,8 @@ SCENARIO("the per-channel gate drops an injected outlier and keeps good arrivals
   }
 }
 
-SCENARIO("bad frames get a status and leave the tracker untouched", "[uw][tracker][status]") {
-  Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+SCENARIO("bad frames get a status and leave the tracker untouched", "[sonar][tracker][status]") {
+  Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
   GIVEN("a first frame with three arrivals") {
     Scan s = frame_at(0);
     s.count = 3;
@@ -364,8 +364,8 @@ SCENARIO("bad frames get a status and leave the tracker untouched", "[uw][tracke
   }
 }
 
-SCENARIO("a far-future frame is refused, and a clock that really moved is followed", "[uw][tracker][time]") {
-  Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+SCENARIO("a far-future frame is refused, and a clock that really moved is followed", "[sonar][tracker][time]") {
+  Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
   for (int k = 0; k < 5; ++k) REQUIRE(tr.step(frame_at(k)) == Status::kOk);
   const Tracker before = tr;
   const auto shifted = [](int k, std::int64_t by_us) {
@@ -413,9 +413,9 @@ SCENARIO("a far-future frame is refused, and a clock that really moved is follow
   }
 }
 
-SCENARIO("a tracker step allocates nothing", "[uw][tracker][alloc]") {
+SCENARIO("a tracker step allocates nothing", "[sonar][tracker][alloc]") {
   GIVEN("a tracker and 50 noisy frames with an outlier every seventh frame") {
-    Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+    Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
     std::mt19937_64 rng(11);
     Scan frames[50];
     for (int k = 0; k < 50; ++k) {
@@ -435,13 +435,13 @@ SCENARIO("a tracker step allocates nothing", "[uw][tracker][alloc]") {
     }
   }
   GIVEN("the float build") {
-    kestrel::UnderwaterTracker<float, 4> tf = kestrel::make_underwater_tracker<float, 4>(uw_params());
-    Tracker td = kestrel::make_underwater_tracker<double, 4>(uw_params());
+    kestrel::SonarTracker<float, 4> tf = kestrel::make_sonar_tracker<float, 4>(sonar_params());
+    Tracker td = kestrel::make_sonar_tracker<double, 4>(sonar_params());
     THEN("it follows the double build within centimetres") {
       for (int k = 0; k < 20; ++k) {
         const Scan sd = frame_at(k);
         REQUIRE(td.step(sd) == Status::kOk);
-        kestrel::UnderwaterTracker<float, 4>::Scan s;
+        kestrel::SonarTracker<float, 4>::Scan s;
         s.t_us = sd.t_us;
         s.count = sd.count;
         for (std::size_t i = 0; i < sd.count; ++i) {
@@ -460,7 +460,7 @@ SCENARIO("a tracker step allocates nothing", "[uw][tracker][alloc]") {
   }
 }
 
-SCENARIO("the sonar adapter turns wire frames into TOA scans", "[uw][hal]") {
+SCENARIO("the sonar adapter turns wire frames into TOA scans", "[sonar][hal]") {
   using kestrel::hal::Frame;
   using kestrel::hal::FrameKind;
   using kestrel::hal::ToaPath;
@@ -534,8 +534,8 @@ SCENARIO("the sonar adapter turns wire frames into TOA scans", "[uw][hal]") {
     }
   }
   GIVEN("wire frames of a noise-free track fed through the adapter") {
-    Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
-    Tracker direct = kestrel::make_underwater_tracker<double, 4>(uw_params());
+    Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
+    Tracker direct = kestrel::make_sonar_tracker<double, 4>(sonar_params());
     THEN("the tracker follows it as it follows the unquantised scans") {
       for (int k = 0; k < 5; ++k) {
         const Scan truth = frame_at(k);
@@ -559,11 +559,11 @@ SCENARIO("the sonar adapter turns wire frames into TOA scans", "[uw][hal]") {
   }
 }
 
-SCENARIO("the composed sonar tracker checks only the channels a frame carries", "[uw][tracker][status]") {
-  // UnderwaterTracker is Tracker<ChannelGatedEkf, MultilaterationInitiator,
+SCENARIO("the composed sonar tracker checks only the channels a frame carries", "[sonar][tracker][status]") {
+  // SonarTracker is Tracker<ChannelGatedEkf, MultilaterationInitiator,
   // 1, 1, LabelledAssociation, ReacquireWhenLost> over one ChannelScan entry.
   using Core = Tracker::Core;
-  Tracker tr = kestrel::make_underwater_tracker<double, 4>(uw_params());
+  Tracker tr = kestrel::make_sonar_tracker<double, 4>(sonar_params());
   Core core = tr.core();
   const Scan full = frame_at(0);
   Core::Scan s;

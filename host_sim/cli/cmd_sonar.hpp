@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// `kestrel-sim uw`: Monte Carlo runs of the underwater scenarios (uw003 and
-// its variants; docs/scenarios.md) with the underwater tracker, scored with the
+// `kestrel-sim sonar`: Monte Carlo runs of the underwater scenarios (uw003 and
+// its variants; docs/scenarios.md) with the sonar tracker, scored with the
 // UW metrics (3D / horizontal / depth RMSE, sound-speed error std, gated-out
 // arrivals against the true outliers). Sonar frames, the 7-state estimate
 // and these metrics differ from the radar ones, so this is its own
-// subcommand; its files are listed in report/uw_files.hpp.
+// subcommand; its files are listed in report/sonar_files.hpp.
 //
-// `kestrel-sim uw --study` runs every variant with the paper's gate (k = 2),
-// k = 3 and no gate, and writes the comparison table (uw_study.md / .json).
+// `kestrel-sim sonar --study` runs every variant with the paper's gate (k = 2),
+// k = 3 and no gate, and writes the comparison table (sonar_study.md / .json).
 #pragma once
 
 #include <cstdint>
@@ -21,12 +21,12 @@ class App;
 
 namespace kestrel::sim::cli {
 
-struct UwOptions {
+struct SonarOptions {
   std::string scenario = "uw003";
   std::size_t runs = 200;
   std::uint64_t seed = 0;
   unsigned jobs = 1;
-  std::string out;  ///< Default results/<scenario> (results/uw_study with --study).
+  std::string out;  ///< Default results/<scenario> (results/sonar_study with --study).
   bool plots = true;
   bool study = false;
   double budget_us = 1000.0;
@@ -34,7 +34,7 @@ struct UwOptions {
   /// (filters/sensor_settings.hpp), laid under the options of their own.
   std::string config;
   std::vector<std::string> sets;
-  // Tracker overrides (unset = UnderwaterTrackerParams default).
+  // Tracker overrides (unset = SonarTrackerParams default).
   std::optional<double> gate_k;
   bool no_gate = false;
   bool ellipsoidal = false;
@@ -47,8 +47,8 @@ struct UwOptions {
 };
 
 /// Register the subcommand and its options on `app`.
-CLI::App* add_uw_command(CLI::App& app, UwOptions& options);
+CLI::App* add_sonar_command(CLI::App& app, SonarOptions& options);
 
-int cmd_uw(const UwOptions& options);
+int cmd_sonar(const SonarOptions& options);
 
 }  // namespace kestrel::sim::cli

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "metrics/uw_metrics.hpp"
+#include "metrics/sonar_metrics.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,21 +16,21 @@ namespace {
 
 constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 
-std::uint32_t channel_bit(const UwArrivalRecord& a) {
+std::uint32_t channel_bit(const SonarArrivalRecord& a) {
   return 1u << (2u * a.beacon + static_cast<std::uint32_t>(a.path));
 }
 
-MeanCi field_ci(const std::vector<UwRunMetrics>& runs, double UwRunMetrics::*field) {
+MeanCi field_ci(const std::vector<SonarRunMetrics>& runs, double SonarRunMetrics::*field) {
   std::vector<double> v;
   v.reserve(runs.size());
-  for (const UwRunMetrics& r : runs) v.push_back(r.*field);
+  for (const SonarRunMetrics& r : runs) v.push_back(r.*field);
   return mean_ci95(v);
 }
 
 }  // namespace
 
-UwRunMetrics score_uw_run(const UwScenarioRun& run, const UwRunOutput& out) {
-  UwRunMetrics m;
+SonarRunMetrics score_sonar_run(const SonarScenarioRun& run, const SonarRunOutput& out) {
+  SonarRunMetrics m;
   m.depth_reflections = run.depth_reflections;
   const std::size_t n = std::min(run.frames.size(), out.frames.size());
   m.e3_sq.assign(n, kNan);
@@ -39,13 +39,13 @@ UwRunMetrics score_uw_run(const UwScenarioRun& run, const UwRunOutput& out) {
   m.c_err.assign(n, kNan);
   double s3 = 0, sh = 0, sd = 0, snees = 0, sc = 0, sc2 = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    const UwFrameOutcome& f = out.frames[k];
+    const SonarFrameOutcome& f = out.frames[k];
     if (!f.stepped || f.status != Status::kOk) {
       ++m.frames_refused;
       continue;
     }
     m.step_ns.push_back(f.step_ns);
-    for (const UwArrivalRecord& a : run.frames[k].arrivals) {
+    for (const SonarArrivalRecord& a : run.frames[k].arrivals) {
       ++m.arrivals;
       const bool gated = (f.gated & channel_bit(a)) != 0;
       if (a.outlier) ++m.outliers;
@@ -62,7 +62,7 @@ UwRunMetrics score_uw_run(const UwScenarioRun& run, const UwRunOutput& out) {
       ++m.reinitialisations;
     }
     if (m.init_frame < 0 || !f.reported) continue;
-    const UwTruth& t = run.truth[k];
+    const SonarTruth& t = run.truth[k];
     const Eigen::Vector3d e(f.x[0] - t.x_m, f.x[1] - t.y_m, f.x[2] - t.z_m);
     Eigen::Matrix3d P;
     for (int i = 0; i < 3; ++i) {
@@ -99,24 +99,24 @@ UwRunMetrics score_uw_run(const UwScenarioRun& run, const UwRunOutput& out) {
   return m;
 }
 
-UwSummary summarise_uw(const std::vector<UwRunMetrics>& runs, std::uint64_t budget_ns) {
-  UwSummary s;
+SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint64_t budget_ns) {
+  SonarSummary s;
   s.runs = runs.size();
-  s.rmse_3d_m = field_ci(runs, &UwRunMetrics::rmse_3d_m);
-  s.rmse_h_m = field_ci(runs, &UwRunMetrics::rmse_h_m);
-  s.rmse_depth_m = field_ci(runs, &UwRunMetrics::rmse_depth_m);
-  s.peak_3d_m = field_ci(runs, &UwRunMetrics::peak_3d_m);
-  s.nees = field_ci(runs, &UwRunMetrics::nees);
-  s.c_err_std_mps = field_ci(runs, &UwRunMetrics::c_err_std_mps);
-  s.c_err_mean_mps = field_ci(runs, &UwRunMetrics::c_err_mean_mps);
+  s.rmse_3d_m = field_ci(runs, &SonarRunMetrics::rmse_3d_m);
+  s.rmse_h_m = field_ci(runs, &SonarRunMetrics::rmse_h_m);
+  s.rmse_depth_m = field_ci(runs, &SonarRunMetrics::rmse_depth_m);
+  s.peak_3d_m = field_ci(runs, &SonarRunMetrics::peak_3d_m);
+  s.nees = field_ci(runs, &SonarRunMetrics::nees);
+  s.c_err_std_mps = field_ci(runs, &SonarRunMetrics::c_err_std_mps);
+  s.c_err_mean_mps = field_ci(runs, &SonarRunMetrics::c_err_mean_mps);
   std::size_t frames = 0;
-  for (const UwRunMetrics& r : runs) frames = std::max(frames, r.e3_sq.size());
+  for (const SonarRunMetrics& r : runs) frames = std::max(frames, r.e3_sq.size());
   std::vector<double> a3(frames, 0.0), ah(frames, 0.0), ad(frames, 0.0), ac(frames, 0.0);
   s.step_runs.assign(frames, 0);
   double pc = 0, pc2 = 0;
   std::size_t pn = 0;
   std::vector<std::uint64_t> step_ns;
-  for (const UwRunMetrics& r : runs) {
+  for (const SonarRunMetrics& r : runs) {
     if (r.init_frame < 0) ++s.runs_not_initialised;
     if (r.init_frame > 0) ++s.runs_late_init;
     s.arrivals += r.arrivals;
@@ -159,17 +159,17 @@ UwSummary summarise_uw(const std::vector<UwRunMetrics>& runs, std::uint64_t budg
   return s;
 }
 
-UwMonteCarloResult run_uw_monte_carlo(const UwScenarioConfig& scenario, const UnderwaterTrackerParams& params,
-                                      const UwMonteCarloConfig& config) {
-  UwMonteCarloResult result;
+SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioConfig& scenario, const SonarTrackerParams& params,
+                                      const SonarMonteCarloConfig& config) {
+  SonarMonteCarloResult result;
   result.runs.resize(config.runs);
   for_each_index(
       config.runs, config.jobs,
       [&](std::size_t i) {
         const std::uint64_t seed = config.base_seed + i;
-        UwScenarioRun run = generate_uw(scenario, seed);
-        UwRunOutput out = run_uw(run, params, config.budget_ns);
-        result.runs[i] = score_uw_run(run, out);
+        SonarScenarioRun run = generate_sonar(scenario, seed);
+        SonarRunOutput out = run_sonar(run, params, config.budget_ns);
+        result.runs[i] = score_sonar_run(run, out);
         result.runs[i].seed = seed;
         if (i == 0) {  // only the worker that takes i == 0 writes these
           result.first_run = std::move(run);

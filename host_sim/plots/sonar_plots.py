@@ -1,20 +1,20 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """Figures of one UW run and of its Monte Carlo, like paper 003's figures 1-3
-(called by `kestrel-sim uw`; runnable by hand).
+(called by `kestrel-sim sonar`; runnable by hand).
 
-  uw_plots.py --dir D [--title X]
+  sonar_plots.py --dir D [--title X]
 
-Reads D/uw_truth.csv, D/uw_track.csv, D/uw_arrivals.csv (run 0) and
-D/uw_steps.csv (per-frame RMSE over the runs), written by `kestrel-sim uw`,
+Reads D/sonar_truth.csv, D/sonar_track.csv, D/sonar_arrivals.csv (run 0) and
+D/sonar_steps.csv (per-frame RMSE over the runs), written by `kestrel-sim sonar`,
 and draws:
-  D/uw_track.png        the track as x-y and x-z projections (truth green,
+  D/sonar_track.png        the track as x-y and x-z projections (truth green,
                         estimate red, beacons, the seabed; the fix frame
                         marked), paper fig. 1;
-  D/uw_error.png        position error per frame: run 0's 3D, horizontal and
+  D/sonar_error.png        position error per frame: run 0's 3D, horizontal and
                         depth error, and the Monte Carlo RMSE per frame,
                         paper fig. 2; frames with an outlier gated marked;
-  D/uw_sound_speed.png  sound speed estimate (+-2 sigma) against the truth
+  D/sonar_sound_speed.png  sound speed estimate (+-2 sigma) against the truth
                         for run 0, and the RMS error per frame over the runs,
                         paper fig. 3.
 Only the csv module is used; without matplotlib it prints a warning and
@@ -48,11 +48,11 @@ def main():
     ap.add_argument("--title", default="UW run 0")
     a = ap.parse_args()
     plt = load_matplotlib()
-    truth = rows(os.path.join(a.dir, "uw_truth.csv"))
-    track = [r for r in rows(os.path.join(a.dir, "uw_track.csv")) if r["reported"] == "1"]
-    arrivals = rows(os.path.join(a.dir, "uw_arrivals.csv"))
-    steps = rows(os.path.join(a.dir, "uw_steps.csv"))
-    summary_path = os.path.join(a.dir, "uw_summary.json")
+    truth = rows(os.path.join(a.dir, "sonar_truth.csv"))
+    track = [r for r in rows(os.path.join(a.dir, "sonar_track.csv")) if r["reported"] == "1"]
+    arrivals = rows(os.path.join(a.dir, "sonar_arrivals.csv"))
+    steps = rows(os.path.join(a.dir, "sonar_steps.csv"))
+    summary_path = os.path.join(a.dir, "sonar_summary.json")
     beacons = []
     seabed = math.nan
     if os.path.exists(summary_path):
@@ -107,7 +107,7 @@ def main():
     ax2.legend(fontsize=8)
     fig.suptitle(a.title + " - track (paper 003 fig. 1)")
     fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, "uw_track.png"), dpi=120)
+    fig.savefig(os.path.join(a.dir, "sonar_track.png"), dpi=120)
     plt.close(fig)
 
     # Figure 2: position error per frame.
@@ -143,7 +143,7 @@ def main():
     ax2.legend(fontsize=8)
     fig.suptitle(a.title + " - position error (paper 003 fig. 2)")
     fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, "uw_error.png"), dpi=120)
+    fig.savefig(os.path.join(a.dir, "sonar_error.png"), dpi=120)
     plt.close(fig)
 
     # Figure 3: sound speed.
@@ -163,7 +163,7 @@ def main():
     ax2.grid(alpha=0.3)
     fig.suptitle(a.title + " - sound speed (paper 003 fig. 3)")
     fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, "uw_sound_speed.png"), dpi=120)
+    fig.savefig(os.path.join(a.dir, "sonar_sound_speed.png"), dpi=120)
     plt.close(fig)
     return 0
 

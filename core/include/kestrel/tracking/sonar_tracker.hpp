@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The underwater tracker of paper 003 (UW-003): one target, a few beacons,
+// The sonar tracker of paper 003 (UW-003): one target, a few beacons,
 // each frame a set of TOA arrivals labelled by beacon and path (direct or
 // seabed-reflected). It is the one Tracker (tracking/tracker.hpp) composed
 // for a labelled sensor: ChannelGatedEkf, MultilaterationInitiator,
@@ -8,8 +8,8 @@
 // path). What is left here is the sonar's front end: labels become channels
 // (the checks that need the beacon table), and the step's summary. State
 // [x y z vx vy vz c], measurement models/measurement/multipath_toa.hpp; no
-// allocation, bounded loops. Parts and step: docs/underwater.md, "Front end:
-// UnderwaterTracker::step(scan)".
+// allocation, bounded loops. Parts and step: docs/sonar.md, "Front end:
+// SonarTracker::step(scan)".
 #pragma once
 
 #include <cstddef>
@@ -32,9 +32,9 @@
 
 namespace kestrel {
 
-/// Configuration of an UnderwaterTracker, in its scalar.
+/// Configuration of an SonarTracker, in its scalar.
 template <class Scalar, int kMaxBeacons>
-struct UnderwaterTrackerConfig {
+struct SonarTrackerConfig {
   ConstantVelocity3DSoundSpeed<Scalar> motion{};   ///< Process noise (accel sigma, c random walk).
   MultipathToaConfig<Scalar, kMaxBeacons> toa{};   ///< Beacons, seabed depth D, TOA sigma.
   ChannelGateConfig<Scalar> gate{};                ///< Per-channel k (default 2) and ellipsoidal option (its widen_for_dropped is gate_truncation_covariance).
@@ -55,7 +55,7 @@ struct UnderwaterTrackerConfig {
   /// Without it the k = 2 gate, which drops the ~5 % of good arrivals with
   /// the largest innovations, leaves P too small (uw003-clean, 200 runs:
   /// position NEES 3.66 without, 2.99 with, for 3 degrees of freedom) and
-  /// depth drifts (docs/underwater.md).
+  /// depth drifts (docs/sonar.md).
   bool gate_truncation_covariance = true;
   /// Keep the depth estimate within [init.depth_margin_m, D - that] by
   /// projecting the state onto the bound (ChannelGatedEkf::constrain()).
@@ -73,7 +73,7 @@ struct UnderwaterTrackerConfig {
 };
 
 /// What one step did (readable after step()).
-struct UnderwaterStepStats {
+struct SonarStepStats {
   Status status = Status::kOk;  ///< Return value of the step.
   std::uint8_t arrivals = 0;    ///< Arrivals in the frame.
   std::uint8_t fused = 0;       ///< Arrivals that went into the update.
@@ -87,7 +87,7 @@ struct UnderwaterStepStats {
 };
 
 /// Running totals since construction.
-struct UnderwaterCounters {
+struct SonarCounters {
   std::uint32_t frames_ok = 0;        ///< Steps that returned kOk.
   std::uint32_t initialisations = 0;  ///< Fixes that (re)started the track (first one included).
   std::uint32_t arrivals = 0;         ///< Arrivals in kOk frames.
@@ -99,7 +99,7 @@ struct UnderwaterCounters {
 };
 
 template <class Scalar, int kMaxBeacons = 4, std::size_t kMaxArrivals = 2 * static_cast<std::size_t>(kMaxBeacons)>
-class UnderwaterTracker {
+class SonarTracker {
  public:
   using Motion = ConstantVelocity3DSoundSpeed<Scalar>;
   using Toa = MultipathToa<Motion, kMaxBeacons>;
@@ -120,11 +120,11 @@ class UnderwaterTracker {
   /// associate; no gate on the whole frame); measurement_index 0 (the
   /// frame), with associated false when the gate dropped every channel.
   using Report = TrackReport<Filter>;
-  using Config = UnderwaterTrackerConfig<Scalar, kMaxBeacons>;
+  using Config = SonarTrackerConfig<Scalar, kMaxBeacons>;
   static_assert(Motion::kStateDim == 7, "report layout");
   static_assert(kMaxArrivals <= 255, "per-frame counts are uint8");
 
-  explicit UnderwaterTracker(const Config& config)
+  explicit SonarTracker(const Config& config)
       : config_(config), core_(prototype(config), Initiator(start_config(config)), core_config(config),
                                ReacquireWhenLost<Scalar>(reacquire_params(config))) {}
 
@@ -146,7 +146,7 @@ class UnderwaterTracker {
   ///   tracker's health rule deleted it; the frame's time was taken.
   ///   reports() is empty after any non-kOk status.
   [[nodiscard]] Status step(const Scan& scan) {
-    stats_ = UnderwaterStepStats{};
+    stats_ = SonarStepStats{};
     reported_ = false;
     ChannelFrame frame;
     KESTREL_TRY_OR(refuse, to_channels(scan, frame));
@@ -179,8 +179,8 @@ class UnderwaterTracker {
 
   /// The report of the last kOk step (one), or nothing.
   std::span<const Report> reports() const { return reported_ ? core_.reports() : std::span<const Report>{}; }
-  const UnderwaterStepStats& last_step() const { return stats_; }
-  const UnderwaterCounters& counters() const { return counters_; }
+  const SonarStepStats& last_step() const { return stats_; }
+  const SonarCounters& counters() const { return counters_; }
   /// The track's filter (state, covariance, per-channel diagnostics of the
   /// last update); the prototype before the first fix.
   const Filter& filter() const {
@@ -240,7 +240,7 @@ class UnderwaterTracker {
   }
 
   Status refuse(Status s) {
-    stats_ = UnderwaterStepStats{};
+    stats_ = SonarStepStats{};
     stats_.status = s;
     reported_ = false;
     counters_.resyncs = core_.resyncs();
@@ -287,16 +287,16 @@ class UnderwaterTracker {
   Config config_;
   Filter prototype_ = prototype(config_);
   Core core_;
-  UnderwaterStepStats stats_{};
-  UnderwaterCounters counters_{};
+  SonarStepStats stats_{};
+  SonarCounters counters_{};
   bool reported_ = false;
 };
 
-/// Parameters of the underwater tracker in SI units (double), with the
+/// Parameters of the sonar tracker in SI units (double), with the
 /// defaults of UW-003 and the filter defaults a check found workable
-/// (docs/scenarios.md). make_underwater_tracker() turns them into a Config.
-struct UnderwaterTrackerParams {
-  static constexpr int kMaxBeacons = 8;  ///< 8 beacons x 2 paths = hal::kMaxToaArrivals.
+/// (docs/scenarios.md). make_sonar_tracker() turns them into a Config.
+struct SonarTrackerParams {
+  static constexpr int kMaxBeacons = 8;  ///< 8 beacons x 2 paths = hal::kMaxSonarArrivals.
   double beacons_m[kMaxBeacons][3] = {{0, 0, 0}, {2000, 0, 0}, {0, 2000, 0}, {2000, 2000, 0}};  ///< [x, y, depth], m.
   std::uint8_t beacon_count = 4;              ///< Beacons in use.
   double seabed_depth_m = 150.0;              ///< D, m.
@@ -326,9 +326,9 @@ struct UnderwaterTrackerParams {
 
 /// Tracker configuration from the parameters. Beacons past kMaxBeacons are ignored.
 template <class Scalar, int kMaxBeacons>
-UnderwaterTrackerConfig<Scalar, kMaxBeacons> underwater_tracker_config(const UnderwaterTrackerParams& p) {
+SonarTrackerConfig<Scalar, kMaxBeacons> sonar_tracker_config(const SonarTrackerParams& p) {
   using T = ScalarTraits<Scalar>;
-  UnderwaterTrackerConfig<Scalar, kMaxBeacons> c;
+  SonarTrackerConfig<Scalar, kMaxBeacons> c;
   c.motion.accel_sigma_mps2 = T::from_double(p.accel_sigma_mps2);
   c.motion.sound_speed_q_m2ps3 = T::from_double(p.sound_speed_sigma_mps_per_sqrt_s * p.sound_speed_sigma_mps_per_sqrt_s);
   const int n = p.beacon_count < kMaxBeacons ? p.beacon_count : kMaxBeacons;
@@ -359,10 +359,10 @@ UnderwaterTrackerConfig<Scalar, kMaxBeacons> underwater_tracker_config(const Und
   return c;
 }
 
-/// The underwater tracker with the given parameters.
+/// The sonar tracker with the given parameters.
 template <class Scalar, int kMaxBeacons = 4>
-UnderwaterTracker<Scalar, kMaxBeacons> make_underwater_tracker(const UnderwaterTrackerParams& p) {
-  return UnderwaterTracker<Scalar, kMaxBeacons>(underwater_tracker_config<Scalar, kMaxBeacons>(p));
+SonarTracker<Scalar, kMaxBeacons> make_sonar_tracker(const SonarTrackerParams& p) {
+  return SonarTracker<Scalar, kMaxBeacons>(sonar_tracker_config<Scalar, kMaxBeacons>(p));
 }
 
 }  // namespace kestrel

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/cmd_uw.hpp"
+#include "cli/cmd_sonar.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -13,9 +13,9 @@
 
 #include "cli/commands.hpp"
 #include "filters/sensor_settings.hpp"
-#include "metrics/uw_metrics.hpp"
+#include "metrics/sonar_metrics.hpp"
 #include "report/output_files.hpp"
-#include "report/uw_files.hpp"
+#include "report/sonar_files.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -25,10 +25,10 @@ void print_ci(const char* name, const MeanCi& m, const char* unit) {
   std::printf("  %-34s %9.3f  [%.3f, %.3f] %s (n = %zu)\n", name, m.mean, m.ci95_low, m.ci95_high, unit, m.n);
 }
 
-UnderwaterTrackerParams params_from(const UwOptions& o, const UwScenarioConfig& scenario) {
-  UnderwaterTrackerParams p = uw_params_for(scenario);
+SonarTrackerParams params_from(const SonarOptions& o, const SonarScenarioConfig& scenario) {
+  SonarTrackerParams p = sonar_params_for(scenario);
   // --config, then --set, then the options of their own.
-  apply_uw_settings(read_settings(o.config, o.sets), p);
+  apply_sonar_settings(read_settings(o.config, o.sets), p);
   if (o.gate_k) {
     if (!(*o.gate_k > 0.0)) throw std::invalid_argument("--gate-k must be positive");
     p.gate_k_sigma = *o.gate_k;
@@ -44,7 +44,7 @@ UnderwaterTrackerParams params_from(const UwOptions& o, const UwScenarioConfig& 
   return p;
 }
 
-std::string gate_label(const UnderwaterTrackerParams& p) {
+std::string gate_label(const SonarTrackerParams& p) {
   std::string s;
   if (p.per_channel_gate) {
     char buf[32];
@@ -55,10 +55,10 @@ std::string gate_label(const UnderwaterTrackerParams& p) {
   return s.empty() ? "no gate" : s;
 }
 
-UwMonteCarloConfig mc_config(const UwOptions& o) {
+SonarMonteCarloConfig mc_config(const SonarOptions& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
-  UwMonteCarloConfig c;
+  SonarMonteCarloConfig c;
   c.runs = o.runs;
   c.base_seed = o.seed;
   c.jobs = o.jobs;
@@ -66,24 +66,24 @@ UwMonteCarloConfig mc_config(const UwOptions& o) {
   return c;
 }
 
-int run_single(const UwOptions& o) {
-  const UwScenarioConfig scenario = uw_config_by_name(o.scenario);
-  const UnderwaterTrackerParams params = params_from(o, scenario);
-  const UwMonteCarloConfig config = mc_config(o);
-  const UwMonteCarloResult mc = run_uw_monte_carlo(scenario, params, config);
-  const UwSummary s = summarise_uw(mc.runs, config.budget_ns);
+int run_single(const SonarOptions& o) {
+  const SonarScenarioConfig scenario = sonar_config_by_name(o.scenario);
+  const SonarTrackerParams params = params_from(o, scenario);
+  const SonarMonteCarloConfig config = mc_config(o);
+  const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
+  const SonarSummary s = summarise_sonar(mc.runs, config.budget_ns);
 
   const std::filesystem::path dir =
       o.out.empty() ? std::filesystem::path("results") / scenario.name : std::filesystem::path(o.out);
   std::filesystem::create_directories(dir);
-  write_uw_runs_csv(dir / "uw_runs.csv", mc.runs);
-  write_uw_steps_csv(dir / "uw_steps.csv", s);
-  write_uw_run_csvs(dir, mc.first_run, mc.first_output);
-  nlohmann::json summary = uw_summary_json(scenario, params, config, s);
-  summary["parameters"] = uw_parameters(params);  // every key, as the run used it
-  write_json_file(dir / "uw_summary.json", summary);
+  write_sonar_runs_csv(dir / "sonar_runs.csv", mc.runs);
+  write_sonar_steps_csv(dir / "sonar_steps.csv", s);
+  write_sonar_run_csvs(dir, mc.first_run, mc.first_output);
+  nlohmann::json summary = sonar_summary_json(scenario, params, config, s);
+  summary["parameters"] = sonar_parameters(params);  // every key, as the run used it
+  write_json_file(dir / "sonar_summary.json", summary);
   const bool plotted =
-      o.plots && plot_uw(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
+      o.plots && plot_sonar(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
 
   std::printf("%s: %zu runs (seeds %llu..%llu), UW EKF, %s, sa %g m/s^2, c noise %g m/s/sqrt(s)\n",
               scenario.name.c_str(), s.runs, static_cast<unsigned long long>(o.seed),
@@ -105,21 +105,21 @@ int run_single(const UwOptions& o) {
   std::printf("  runs with the first fix after frame 0: %zu; never initialised: %zu; re-acquisitions %zu; frames "
               "refused %zu; truth depth reflections %zu\n",
               s.runs_late_init, s.runs_not_initialised, s.reinitialisations, s.frames_refused, s.depth_reflections);
-  std::printf("  step (adapter + UnderwaterTracker::step) ns: median %llu, p99 %llu, max %llu, mean %.0f over %zu "
+  std::printf("  step (adapter + SonarTracker::step) ns: median %llu, p99 %llu, max %llu, mean %.0f over %zu "
               "steps (%u job%s)\n",
               static_cast<unsigned long long>(s.timing.median_ns), static_cast<unsigned long long>(s.timing.p99_ns),
               static_cast<unsigned long long>(s.timing.max_ns), s.timing.mean_ns, s.timing.steps, o.jobs,
               o.jobs == 1 ? "" : "s");
-  std::printf("wrote %s/{uw_runs.csv, uw_steps.csv, uw_truth.csv, uw_arrivals.csv, uw_track.csv, uw_summary.json%s}\n",
-              dir.c_str(), plotted ? ", uw_track.png, uw_error.png, uw_sound_speed.png" : "");
+  std::printf("wrote %s/{sonar_runs.csv, sonar_steps.csv, sonar_truth.csv, sonar_arrivals.csv, sonar_track.csv, sonar_summary.json%s}\n",
+              dir.c_str(), plotted ? ", sonar_track.png, sonar_error.png, sonar_sound_speed.png" : "");
   return 0;
 }
 
 /// Every variant with the paper's gate (k = 2), k = 3 and no gate.
-int run_study(const UwOptions& o) {
-  const UwMonteCarloConfig config = mc_config(o);
+int run_study(const SonarOptions& o) {
+  const SonarMonteCarloConfig config = mc_config(o);
   const std::filesystem::path dir =
-      o.out.empty() ? std::filesystem::path("results") / "uw_study" : std::filesystem::path(o.out);
+      o.out.empty() ? std::filesystem::path("results") / "sonar_study" : std::filesystem::path(o.out);
   std::filesystem::create_directories(dir);
   struct Gate {
     const char* label;
@@ -133,25 +133,25 @@ int run_study(const UwOptions& o) {
   md += "| scenario | gate | 3D RMSE m | horizontal m | depth m | c err std m/s (per run / pooled) | NEES | "
         "outliers gated / true | good gated |\n";
   md += "|---|---|---|---|---|---|---|---|---|\n";
-  for (const std::string& name : uw_scenario_names()) {
-    const UwScenarioConfig scenario = uw_config_by_name(name);
+  for (const std::string& name : sonar_scenario_names()) {
+    const SonarScenarioConfig scenario = sonar_config_by_name(name);
     for (const Gate& g : gates) {
-      UwOptions oo = o;
+      SonarOptions oo = o;
       oo.gate_k = g.k;
       oo.no_gate = !g.per_channel;
-      const UnderwaterTrackerParams params = params_from(oo, scenario);
-      const UwMonteCarloResult mc = run_uw_monte_carlo(scenario, params, config);
-      const UwSummary s = summarise_uw(mc.runs, config.budget_ns);
+      const SonarTrackerParams params = params_from(oo, scenario);
+      const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
+      const SonarSummary s = summarise_sonar(mc.runs, config.budget_ns);
       const std::filesystem::path sub = dir / (name + "_" + (g.per_channel ? "k" + std::to_string(static_cast<int>(g.k))
                                                                            : std::string("nogate")));
       std::filesystem::create_directories(sub);
-      write_uw_runs_csv(sub / "uw_runs.csv", mc.runs);
-      write_uw_steps_csv(sub / "uw_steps.csv", s);
-      write_uw_run_csvs(sub, mc.first_run, mc.first_output);
-      const nlohmann::json j = uw_summary_json(scenario, params, config, s);
-      write_json_file(sub / "uw_summary.json", j);
+      write_sonar_runs_csv(sub / "sonar_runs.csv", mc.runs);
+      write_sonar_steps_csv(sub / "sonar_steps.csv", s);
+      write_sonar_run_csvs(sub, mc.first_run, mc.first_output);
+      const nlohmann::json j = sonar_summary_json(scenario, params, config, s);
+      write_json_file(sub / "sonar_summary.json", j);
       if (o.plots && g.per_channel && g.k == 3.0) {
-        plot_uw(sub, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
+        plot_sonar(sub, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
       }
       char line[512];
       std::snprintf(line, sizeof line,
@@ -166,21 +166,21 @@ int run_study(const UwOptions& o) {
     }
   }
   {
-    std::ofstream f(dir / "uw_study.md", std::ios::trunc);
+    std::ofstream f(dir / "sonar_study.md", std::ios::trunc);
     f << "UW study: " << config.runs << " runs per row, seeds " << config.base_seed << ".."
-      << config.base_seed + config.runs - 1 << " (kestrel-sim uw --study)\n\n"
+      << config.base_seed + config.runs - 1 << " (kestrel-sim sonar --study)\n\n"
       << md;
-    if (!f) throw std::runtime_error("cannot write uw_study.md");
+    if (!f) throw std::runtime_error("cannot write sonar_study.md");
   }
-  write_json_file(dir / "uw_study.json", {{"schema", "kestrel-sim-uw-study/1"}, {"runs", config.runs}, {"rows", rows}});
-  std::printf("wrote %s/{uw_study.md, uw_study.json} and one folder per row\n", dir.c_str());
+  write_json_file(dir / "sonar_study.json", {{"schema", "kestrel-sim-sonar-study/1"}, {"runs", config.runs}, {"rows", rows}});
+  std::printf("wrote %s/{sonar_study.md, sonar_study.json} and one folder per row\n", dir.c_str());
   return 0;
 }
 
 }  // namespace
 
-CLI::App* add_uw_command(CLI::App& app, UwOptions& o) {
-  CLI::App* cmd = app.add_subcommand("uw", "Underwater multipath TOA Monte Carlo (uw003 and variants)");
+CLI::App* add_sonar_command(CLI::App& app, SonarOptions& o) {
+  CLI::App* cmd = app.add_subcommand("sonar", "Sonar (underwater multipath TOA) Monte Carlo (uw003 and variants)");
   cmd->add_option("--scenario,-s", o.scenario, "uw003, uw003-direct, uw003-clean, uw003-d100 or uw003-1ms")
       ->capture_default_str();
   cmd->add_option("--runs,-n", o.runs, "Monte Carlo runs")->capture_default_str();
@@ -188,11 +188,11 @@ CLI::App* add_uw_command(CLI::App& app, UwOptions& o) {
   cmd->add_option("--jobs,-j", o.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
   cmd->add_option("--out,-o", o.out, "Output directory (default results/<scenario>)");
   cmd->add_flag("!--no-plots", o.plots, "Do not run the plot script");
-  cmd->add_flag("--study", o.study, "Every variant with k = 2, k = 3 and no gate; writes uw_study.md");
+  cmd->add_flag("--study", o.study, "Every variant with k = 2, k = 3 and no gate; writes sonar_study.md");
   cmd->add_option("--budget-us", o.budget_us, "Step budget for overrun counting, us")->capture_default_str();
   cmd->add_option("--config", o.config,
-                  "JSON file of underwater tracker parameters by key (`list --settings`, docs/parameters.md)");
-  cmd->add_option("--set", o.sets, "KEY=VALUE, repeatable: one underwater tracker parameter; wins over --config, "
+                  "JSON file of sonar tracker parameters by key (`list --settings`, docs/parameters.md)");
+  cmd->add_option("--set", o.sets, "KEY=VALUE, repeatable: one sonar tracker parameter; wins over --config, "
                                    "loses to the parameter's own option (--gate-k, ...)");
   cmd->add_option("--gate-k", o.gate_k, "Per-channel gate multiplier k (default 2, the paper's)");
   cmd->add_flag("--no-gate", o.no_gate, "Per-channel gate off");
@@ -206,6 +206,6 @@ CLI::App* add_uw_command(CLI::App& app, UwOptions& o) {
   return cmd;
 }
 
-int cmd_uw(const UwOptions& o) { return o.study ? run_study(o) : run_single(o); }
+int cmd_sonar(const SonarOptions& o) { return o.study ? run_study(o) : run_single(o); }
 
 }  // namespace kestrel::sim::cli

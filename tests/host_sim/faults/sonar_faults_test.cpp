@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Faults injected into a sonar stream on the path a board receives it:
 // uw003 (seed 1, 50 frames at 1 s) -> wire bytes -> StreamFileFeed (frame
-// assembler) -> SonarAdapter -> UnderwaterTracker::step, inside hal::Runner
-// (sim::run_uw_stream). The radar counterpart is fault_injection_test.cpp;
+// assembler) -> SonarAdapter -> SonarTracker::step, inside hal::Runner
+// (sim::run_sonar_stream). The radar counterpart is fault_injection_test.cpp;
 // the table of both is in docs/robustness.md. Each fault has its expected
 // count of every status the Runner returns and of the tracks that replace
 // the first one (only where a documented rule restarts it: a gap over
@@ -23,7 +23,7 @@
 #include <vector>
 
 #include "host_sim/faults/wire_faults.hpp"
-#include "montecarlo/uw_run.hpp"
+#include "montecarlo/sonar_run.hpp"
 
 using namespace kestrel::sim;  // NOLINT(google-build-using-namespace)
 using kestrel::Status;
@@ -36,7 +36,7 @@ constexpr std::int64_t kSecondUs = 1'000'000;
 using namespace kestrel::test::faults;  // NOLINT(google-build-using-namespace): the stream builders
 using Fault = WireFault;
 
-std::vector<Fault> make_faults(const UwScenarioRun& run) {
+std::vector<Fault> make_faults(const SonarScenarioRun& run) {
   const std::size_t n = run.frames.size();
   std::vector<Fault> faults;
   const auto each = [&](auto&& per_frame) { return each_frame(run.frames, per_frame); };
@@ -115,10 +115,10 @@ struct Observed {
   double final_position_sigma = 0.0;
 };
 
-Observed observe(const UwRunOutput& out) {
+Observed observe(const SonarRunOutput& out) {
   Observed o;
   o.frames = out.frames.size();
-  for (const UwFrameOutcome& f : out.frames) {
+  for (const SonarFrameOutcome& f : out.frames) {
     if (f.status != Status::kOk) ++o.not_ok[f.status];
     const bool accepted = f.stepped && (f.status == Status::kOk || f.status == Status::kTooManyCandidates);
     if (accepted && !f.reported) ++o.accepted_without_report;
@@ -139,16 +139,16 @@ Observed observe(const UwRunOutput& out) {
 }  // namespace
 
 SCENARIO("injected sonar stream faults give their status counts, keep or restart the track by rule, and recover",
-         "[host_sim][faults][uw]") {
-  const UwScenarioConfig config = uw003_config();
-  const UwScenarioRun run = generate_uw(config, 1);
-  const kestrel::UnderwaterTrackerParams params = uw_params_for(config);
+         "[host_sim][faults][sonar]") {
+  const SonarScenarioConfig config = uw003_config();
+  const SonarScenarioRun run = generate_sonar(config, 1);
+  const kestrel::SonarTrackerParams params = sonar_params_for(config);
   const std::vector<Fault> faults = make_faults(run);
-  const Observed clean = observe(run_uw_stream(faults.front().stream, params, 1'000'000'000));
+  const Observed clean = observe(run_sonar_stream(faults.front().stream, params, 1'000'000'000));
   REQUIRE(clean.track_ids.size() == 1);
   for (const Fault& fault : faults) {
     INFO("fault: " << fault.name);
-    const Observed o = observe(run_uw_stream(fault.stream, params, 1'000'000'000));
+    const Observed o = observe(run_sonar_stream(fault.stream, params, 1'000'000'000));
     const std::string seen = describe(o.not_ok);
     const double moved = std::hypot(o.final_position[0] - clean.final_position[0],
                                     o.final_position[1] - clean.final_position[1],
