@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Decode KTRK track records (the binary track output of every board,
-targets/common/include/kestrel/board/ktrk_record.hpp) into CSV on stdout.
+"""Decode KTRK track records (the binary track output of every board, layout
+in docs/wire_format.md, "Track records (KTRK v2)") into CSV on stdout.
 
   tools/ktrk_decode.py tracks.ktrk > tracks.csv
   tools/ktrk_decode.py - < /dev/ttyUSB0        # a board's UART, via a raw tty

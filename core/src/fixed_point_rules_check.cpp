@@ -19,9 +19,9 @@ template class Ekf<CaMotion<double>, CaPolarRadar<double>, EkfUpdateForm::kSeque
 template class Ekf<CaMotion<float>, CaPolarRadar<float>, EkfUpdateForm::kSequentialWhitened>;
 
 // The board path: every real constant converted at compile time.
-inline constexpr RadarTrackerScalars<Q31_32> kQ31Scalars = radar_tracker_scalars<Q31_32>(RadarTrackerParams{});
-inline constexpr RadarTrackerScalars<Q23_40> kQ23Scalars = radar_tracker_scalars<Q23_40>(RadarTrackerParams{});
-static_assert(kQ31Scalars.sigma_range_m == Q31_32(3));
-static_assert(kQ23Scalars.max_position_variance_m2 == Q23_40(1000000));
+inline constexpr RadarTrackerConfig<Q31_32> kQ31Config = radar_tracker_config<Q31_32>(RadarTrackerParams{});
+inline constexpr RadarTrackerConfig<Q23_40> kQ23Config = radar_tracker_config<Q23_40>(RadarTrackerParams{});
+static_assert(kQ31Config.sigma_range_m == Q31_32(3));
+static_assert(kQ23Config.max_position_variance_m2 == Q23_40(1000000));
 
 }  // namespace kestrel

@@ -58,7 +58,7 @@ void read_record(FrameKind kind, std::span<const std::uint8_t> rec, Frame& out, 
       return;
     case FrameKind::kSonar:
       out.sonar[i] = SonarArrival{load_u32(rec, kSonarTimeOfFlightOffset), rec[kSonarBeaconIdOffset],
-                                static_cast<ToaPath>(rec[kSonarPathOffset])};
+                                  static_cast<ToaPath>(rec[kSonarPathOffset])};
       return;
     case FrameKind::kPcl:
       out.pcl[i] = PclCandidate{load_u32(rec, kPclBistaticRangeOffset), load_i32(rec, kPclDopplerOffset),

@@ -225,7 +225,7 @@ template <class F>
 BenchTracker<F> make_tracker() {
   const RadarTrackerParams p = bench_params();
   return BenchTracker<F>(make_filter<F>(p), make_initiator<F>(p),
-                         radar_tracker_config<typename F::Scalar>(p));
+                         tracker_config_of<typename F::Scalar>(p));
 }
 
 template <class Tracker>

@@ -127,7 +127,7 @@ Record run_filter(F& f, const RunData& d) {
 
 template <int kN>
 Record run_crpf(std::size_t cell, std::uint64_t run, std::size_t filter, const RunData& d) {
-  CrpfParams<double> params;  // defaults of docs/filters.md: lambda 0.8, beta 2, delta 1, kick 2 m/s^2
+  CrpfConfig<double> params;  // defaults of docs/filters.md: lambda 0.8, beta 2, delta 1, kick 2 m/s^2
   params.seed = crpf_seed(cell, run, filter);
   params.refuse_indefinite = false;  // scored on the estimate alone, as paper 001 does
   auto f = std::make_unique<Crpf<Motion, Radar, kN>>(motion_for(kTuning), radar_for(kTuning), params);
@@ -195,7 +195,7 @@ std::array<Record, kFilters> run_one(std::size_t cell, std::uint64_t run) {
   return out;
 }
 
-Records run_campaign(const CampaignConfig& config) {
+Records run_campaign(const CampaignParams& config) {
   if (config.run_end <= config.run_begin || config.run_end > config.total_runs) {
     throw std::invalid_argument("mc001: empty or out-of-range run range");
   }

@@ -65,7 +65,7 @@ struct Records {
   const Record& at(std::size_t cell, std::uint64_t run, std::size_t filter) const;
 };
 
-struct CampaignConfig {
+struct CampaignParams {
   std::uint64_t total_runs = 3000;
   std::uint64_t run_begin = 0;  ///< This shard's runs: [run_begin, run_end).
   std::uint64_t run_end = 3000;
@@ -74,7 +74,7 @@ struct CampaignConfig {
 };
 
 /// Runs [run_begin, run_end) of every cell with every filter.
-Records run_campaign(const CampaignConfig& config);
+Records run_campaign(const CampaignParams& config);
 
 /// One run of one cell, all filters (exposed for tests).
 std::array<Record, kFilters> run_one(std::size_t cell, std::uint64_t run);

@@ -41,7 +41,7 @@ int generate_other_kind(const GenerateOptions& o) {
   const std::filesystem::path stream_path(o.out);
   const auto truth_path = std::filesystem::path(stream_path).replace_extension(".truth.csv");
   if (is_name_of(o.scenario, pcl_scenario_names())) {
-    const PclScenarioConfig c = pcl_config_by_name(o.scenario);
+    const PclScenarioParams c = pcl_config_by_name(o.scenario);
     name = c.name;
     if (o.asterix) throw std::invalid_argument("--asterix: CAT048 carries radar plots only, not " + name);
     const PclScenarioRun run = generate_pcl(c, o.seed);
@@ -50,7 +50,7 @@ int generate_other_kind(const GenerateOptions& o) {
     if (stream_path.has_parent_path()) std::filesystem::create_directories(stream_path.parent_path());
     write_pcl_truth_csv(truth_path, run);
   } else {
-    const SonarScenarioConfig c = sonar_config_by_name(o.scenario);
+    const SonarScenarioParams c = sonar_config_by_name(o.scenario);
     name = c.name;
     if (o.asterix) throw std::invalid_argument("--asterix: CAT048 carries radar plots only, not " + name);
     const SonarScenarioRun run = generate_sonar(c, o.seed);

@@ -59,7 +59,8 @@ int cmd_list(bool settings) {
   std::printf("sonar scenarios (run, sonar, generate; replay --stream of their streams, --scenario picks the "
               "installation; timing):\n ");
   for (const std::string& n : sonar_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; its other options on `sonar`)\n", std::string(kSonarFilterName).c_str());
+  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; its other options on `sonar`)\n",
+              std::string(kSonarFilterName).c_str());
   std::printf("multi-target radar scenarios (crossing, raid, formation-split above): multi only");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");

@@ -58,7 +58,7 @@ void add_montecarlo_commands(CLI::App& app, MonteCarloOptions& o, MergeOptions& 
 int cmd_montecarlo(const MonteCarloOptions& o) {
   if (o.campaign != "mc001") throw std::invalid_argument("unknown campaign '" + o.campaign + "' (known: mc001)");
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  mc001::CampaignConfig config;
+  mc001::CampaignParams config;
   config.total_runs = o.runs;
   config.run_begin = 0;
   config.run_end = o.runs;

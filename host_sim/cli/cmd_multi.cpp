@@ -80,7 +80,7 @@ struct McResult {
   std::vector<MultiTargetRunMetrics> runs;
 };
 
-McResult run_mc(const Scenario& scenario, const MultiOptions& o, const MultiRunConfig& config) {
+McResult run_mc(const Scenario& scenario, const MultiOptions& o, const MultiRunParams& config) {
   McResult r;
   r.runs.resize(o.runs);
   for_each_index(
@@ -162,7 +162,7 @@ int cmd_multi(const MultiOptions& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.cutoff_m > 0.0) || !(o.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
   if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
-  MultiRunConfig config;
+  MultiRunParams config;
   config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
   config.filter = multi_filter_by_name(o.filter);
   std::vector<Setting> settings;
@@ -171,7 +171,7 @@ int cmd_multi(const MultiOptions& o) {
   apply_settings(settings, config.options);
   if (o.qj.has_value()) config.options.qj = o.qj;
   if (o.gate_tentative) config.gate_tentative = gate_option(*o.gate_tentative, "--gate-tentative");
-  config.spa = SpaConfig{o.cutoff_m, o.order};
+  config.spa = SpaParams{o.cutoff_m, o.order};
   config.persistence_steps = o.persistence_steps;
   config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
 
@@ -198,7 +198,7 @@ int cmd_multi(const MultiOptions& o) {
       {multi_associator_name(config.associator), &main.runs}};
   McResult oracle;
   if (o.compare_oracle && config.associator != MultiAssociator::kOracle) {
-    MultiRunConfig oc = config;
+    MultiRunParams oc = config;
     oc.associator = MultiAssociator::kOracle;
     oracle = run_mc(*scenario, o, oc);
     const Summary so = summarise(oracle.runs);

@@ -67,7 +67,7 @@ CLI::App* add_pcl_command(CLI::App& app, PclOptions& o) {
 }
 
 int cmd_pcl(const PclOptions& o) {
-  const PclScenarioConfig scenario = pcl_config_by_name(o.scenario);
+  const PclScenarioParams scenario = pcl_config_by_name(o.scenario);
   PclTrackerParams params = pcl_params_for(scenario);
   // --config, then --set, then the options of their own.
   const std::vector<Setting> settings = read_settings(o.config, o.sets);
@@ -106,7 +106,7 @@ int cmd_pcl(const PclOptions& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
 
-  PclMonteCarloConfig config;
+  PclMonteCarloParams config;
   config.runs = o.runs;
   config.base_seed = o.seed;
   config.jobs = o.jobs;

@@ -144,7 +144,7 @@ nlohmann::json truth_match_json(const TruthMatch& m) {
 OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
                            const PclTrackerParams& params, std::uint64_t budget_ns,
                            const std::filesystem::path& dir, const ReplayTruth* truth) {
-  const PclScenarioConfig sc = pcl_config_by_name(scenario_name);
+  const PclScenarioParams sc = pcl_config_by_name(scenario_name);
   const TrackerPolicies policies{};  // pcl's defaults: nearest neighbour, M-of-N
   // The truth names the target's detection of each frame; without it which
   // candidate is the target's is unknown.
@@ -172,7 +172,7 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
                        tolerance);
   if (score) {
     const PclRunMetrics& m = score->metrics;
-    PclMonteCarloConfig config;
+    PclMonteCarloParams config;
     config.runs = 1;
     config.budget_ns = budget_ns;
     config.policies = policies;
@@ -204,9 +204,9 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
 }
 
 OtherKindResult replay_sonar(std::vector<std::uint8_t> bytes, const std::string& scenario_name,
-                          const SonarTrackerParams& params, std::uint64_t budget_ns,
-                          const std::filesystem::path& dir, const ReplayTruth* truth) {
-  const SonarScenarioConfig sc = sonar_config_by_name(scenario_name);
+                             const SonarTrackerParams& params, std::uint64_t budget_ns,
+                             const std::filesystem::path& dir, const ReplayTruth* truth) {
+  const SonarScenarioParams sc = sonar_config_by_name(scenario_name);
   const SonarRunOutput out = run_sonar_stream(std::move(bytes), params, budget_ns);
   OtherKindResult r;
   r.stats = out.stats;
@@ -229,7 +229,7 @@ OtherKindResult replay_sonar(std::vector<std::uint8_t> bytes, const std::string&
   if (truth != nullptr) {
     const SonarReplayScore score = score_sonar_replay(out, truth->sonar);
     const SonarRunMetrics& m = score.metrics;
-    SonarMonteCarloConfig config;
+    SonarMonteCarloParams config;
     config.runs = 1;
     config.budget_ns = budget_ns;
     r.entry.update(metric_fields(sonar_summary_json(sc, params, config, summarise_sonar({m}, budget_ns)),
@@ -314,7 +314,8 @@ int replay_other_kind(const ReplayOptions& o, hal::FrameKind kind, std::vector<s
   merge_summary_file(dir / "summary.json", "replay", filter, entry);
 
   std::printf("replay %s: %s stream, %s tracker (%s) with the sensor parameters of %s%s\n", source.c_str(),
-              kind_name.c_str(), kind == hal::FrameKind::kPcl ? "PCL" : "sonar", filter.c_str(), sensor_scenario.c_str(),
+              kind_name.c_str(), kind == hal::FrameKind::kPcl ? "PCL" : "sonar", filter.c_str(),
+              sensor_scenario.c_str(),
               o.scenario.empty() ? " (the default; --scenario chooses another)" : "");
   if (!settings.empty()) {
     std::printf("  parameters set by --config/--set:");
@@ -482,7 +483,7 @@ int cmd_replay(const ReplayOptions& o) {
   }
   if (o.ungated || !choice.board_gate_set) options.board_gate = !o.ungated;
   const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
-  ScoringConfig scoring;
+  ScoringParams scoring;
   scoring.first_scored_step = o.first_scored_step;
   const double period_s = median_frame_period_s(frames);
   StreamInput input(std::move(bytes), format);

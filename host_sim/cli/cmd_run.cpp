@@ -21,8 +21,8 @@
 namespace kestrel::sim::cli {
 
 namespace {
-MonteCarloConfig config_from(const FilterChoice& f, std::size_t runs, std::uint64_t seed, unsigned jobs) {
-  MonteCarloConfig c;
+MonteCarloParams config_from(const FilterChoice& f, std::size_t runs, std::uint64_t seed, unsigned jobs) {
+  MonteCarloParams c;
   c.runs = runs;
   c.base_seed = seed;
   c.jobs = jobs;
@@ -95,7 +95,7 @@ int cmd_run(const RunOptions& o) {
     return run_sensor_scenario(o, *kind);
   }
   if (kind.has_value()) check_filter_fits(o.filter, *kind, "scenario '" + o.scenario + "' is a radar scenario");
-  const MonteCarloConfig config = config_from(o.filter, o.runs, o.seed, o.jobs);
+  const MonteCarloParams config = config_from(o.filter, o.runs, o.seed, o.jobs);
   const auto made = make_scenario(o.scenario);
   // Single-target scoring (one truth, RMSE) does not apply to several targets.
   if (made->info().targets > 1) {

@@ -112,7 +112,7 @@ int cmd_scalars(const ScalarsOptions& o) {
   const auto scenario = make_scenario(o.scenario);
   const ScenarioInfo& info = scenario->info();
   const std::uint64_t budget_ns = budget_ns_from_us(o.budget_us);
-  const ScoringConfig scoring;
+  const ScoringParams scoring;
 
   std::vector<Row> rows;
   for (std::string_view s : kScalarNames) {

@@ -25,7 +25,7 @@ void print_ci(const char* name, const MeanCi& m, const char* unit) {
   std::printf("  %-34s %9.3f  [%.3f, %.3f] %s (n = %zu)\n", name, m.mean, m.ci95_low, m.ci95_high, unit, m.n);
 }
 
-SonarTrackerParams params_from(const SonarOptions& o, const SonarScenarioConfig& scenario) {
+SonarTrackerParams params_from(const SonarOptions& o, const SonarScenarioParams& scenario) {
   SonarTrackerParams p = sonar_params_for(scenario);
   // --config, then --set, then the options of their own.
   apply_sonar_settings(read_settings(o.config, o.sets), p);
@@ -55,10 +55,10 @@ std::string gate_label(const SonarTrackerParams& p) {
   return s.empty() ? "no gate" : s;
 }
 
-SonarMonteCarloConfig mc_config(const SonarOptions& o) {
+SonarMonteCarloParams mc_config(const SonarOptions& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   if (!(o.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
-  SonarMonteCarloConfig c;
+  SonarMonteCarloParams c;
   c.runs = o.runs;
   c.base_seed = o.seed;
   c.jobs = o.jobs;
@@ -67,9 +67,9 @@ SonarMonteCarloConfig mc_config(const SonarOptions& o) {
 }
 
 int run_single(const SonarOptions& o) {
-  const SonarScenarioConfig scenario = sonar_config_by_name(o.scenario);
+  const SonarScenarioParams scenario = sonar_config_by_name(o.scenario);
   const SonarTrackerParams params = params_from(o, scenario);
-  const SonarMonteCarloConfig config = mc_config(o);
+  const SonarMonteCarloParams config = mc_config(o);
   const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
   const SonarSummary s = summarise_sonar(mc.runs, config.budget_ns);
 
@@ -83,9 +83,10 @@ int run_single(const SonarOptions& o) {
   summary["parameters"] = sonar_parameters(params);  // every key, as the run used it
   write_json_file(dir / "sonar_summary.json", summary);
   const bool plotted =
-      o.plots && plot_sonar(dir, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
+      o.plots &&
+      plot_sonar(dir, scenario.name + " / sonar EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
 
-  std::printf("%s: %zu runs (seeds %llu..%llu), UW EKF, %s, sa %g m/s^2, c noise %g m/s/sqrt(s)\n",
+  std::printf("%s: %zu runs (seeds %llu..%llu), sonar EKF, %s, sa %g m/s^2, c noise %g m/s/sqrt(s)\n",
               scenario.name.c_str(), s.runs, static_cast<unsigned long long>(o.seed),
               static_cast<unsigned long long>(o.seed + o.runs - 1), gate_label(params).c_str(),
               params.accel_sigma_mps2, params.sound_speed_sigma_mps_per_sqrt_s);
@@ -110,14 +111,15 @@ int run_single(const SonarOptions& o) {
               static_cast<unsigned long long>(s.timing.median_ns), static_cast<unsigned long long>(s.timing.p99_ns),
               static_cast<unsigned long long>(s.timing.max_ns), s.timing.mean_ns, s.timing.steps, o.jobs,
               o.jobs == 1 ? "" : "s");
-  std::printf("wrote %s/{sonar_runs.csv, sonar_steps.csv, sonar_truth.csv, sonar_arrivals.csv, sonar_track.csv, sonar_summary.json%s}\n",
+  std::printf("wrote %s/{sonar_runs.csv, sonar_steps.csv, sonar_truth.csv, sonar_arrivals.csv, sonar_track.csv, "
+              "sonar_summary.json%s}\n",
               dir.c_str(), plotted ? ", sonar_track.png, sonar_error.png, sonar_sound_speed.png" : "");
   return 0;
 }
 
 /// Every variant with the paper's gate (k = 2), k = 3 and no gate.
 int run_study(const SonarOptions& o) {
-  const SonarMonteCarloConfig config = mc_config(o);
+  const SonarMonteCarloParams config = mc_config(o);
   const std::filesystem::path dir =
       o.out.empty() ? std::filesystem::path("results") / "sonar_study" : std::filesystem::path(o.out);
   std::filesystem::create_directories(dir);
@@ -134,7 +136,7 @@ int run_study(const SonarOptions& o) {
         "outliers gated / true | good gated |\n";
   md += "|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& name : sonar_scenario_names()) {
-    const SonarScenarioConfig scenario = sonar_config_by_name(name);
+    const SonarScenarioParams scenario = sonar_config_by_name(name);
     for (const Gate& g : gates) {
       SonarOptions oo = o;
       oo.gate_k = g.k;
@@ -151,7 +153,7 @@ int run_study(const SonarOptions& o) {
       const nlohmann::json j = sonar_summary_json(scenario, params, config, s);
       write_json_file(sub / "sonar_summary.json", j);
       if (o.plots && g.per_channel && g.k == 3.0) {
-        plot_sonar(sub, scenario.name + " / UW EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
+        plot_sonar(sub, scenario.name + " / sonar EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
       }
       char line[512];
       std::snprintf(line, sizeof line,
@@ -172,7 +174,8 @@ int run_study(const SonarOptions& o) {
       << md;
     if (!f) throw std::runtime_error("cannot write sonar_study.md");
   }
-  write_json_file(dir / "sonar_study.json", {{"schema", "kestrel-sim-sonar-study/1"}, {"runs", config.runs}, {"rows", rows}});
+  write_json_file(dir / "sonar_study.json",
+                  {{"schema", "kestrel-sim-sonar-study/1"}, {"runs", config.runs}, {"rows", rows}});
   std::printf("wrote %s/{sonar_study.md, sonar_study.json} and one folder per row\n", dir.c_str());
   return 0;
 }

@@ -121,7 +121,7 @@ int cmd_suite(const SuiteOptions& o) {
   if (wants(o, "radar")) {
     std::vector<RadarFilterSpec> specs;
     for (const std::string& f : o.filters) specs.push_back(parse_filter_spec(f, o.options));
-    MonteCarloConfig config;
+    MonteCarloParams config;
     config.runs = o.runs;
     config.base_seed = o.seed;
     config.jobs = jobs;

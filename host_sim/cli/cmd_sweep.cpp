@@ -75,7 +75,7 @@ int cmd_sweep(const SweepOptions& o) {
   const std::filesystem::path dir = o.out.empty()
                                         ? std::filesystem::path("results") / ("sweep-" + scenario + "-" + o.filter.filter)
                                         : std::filesystem::path(o.out);
-  MonteCarloConfig config;
+  MonteCarloParams config;
   config.runs = o.runs;
   config.base_seed = o.seed;
   config.jobs = o.jobs;

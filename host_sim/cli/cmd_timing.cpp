@@ -34,10 +34,10 @@ int timing_sensor_scenario(const TimingOptions& o, hal::FrameKind kind) {
   StepTiming timing;
   std::string what;
   if (kind == hal::FrameKind::kPcl) {
-    const PclScenarioConfig scenario = pcl_config_by_name(o.scenario);
+    const PclScenarioParams scenario = pcl_config_by_name(o.scenario);
     PclTrackerParams params = pcl_params_for(scenario);
     apply_pcl_settings(settings, params);
-    PclMonteCarloConfig config;
+    PclMonteCarloParams config;
     config.runs = o.runs;
     config.base_seed = o.seed;
     config.jobs = 1;
@@ -47,10 +47,10 @@ int timing_sensor_scenario(const TimingOptions& o, hal::FrameKind kind) {
     what = scenario.name + " / PCL tracker (" + std::string(kPclFilterName) + ", nn, M-of-N), " +
            std::to_string(o.runs) + " runs";
   } else {
-    const SonarScenarioConfig scenario = sonar_config_by_name(o.scenario);
+    const SonarScenarioParams scenario = sonar_config_by_name(o.scenario);
     SonarTrackerParams params = sonar_params_for(scenario);
     apply_sonar_settings(settings, params);
-    SonarMonteCarloConfig config;
+    SonarMonteCarloParams config;
     config.runs = o.runs;
     config.base_seed = o.seed;
     config.jobs = 1;
@@ -78,7 +78,7 @@ int cmd_timing(const TimingOptions& o) {
   }
   const auto scenario = make_scenario(o.scenario);
   const FilterEntry& filter = find_filter(o.filter.filter);
-  MonteCarloConfig config;
+  MonteCarloParams config;
   config.runs = o.runs;
   config.base_seed = o.seed;
   config.jobs = 1;

@@ -20,7 +20,7 @@ std::uint64_t budget_ns_from_us(double budget_us) {
 }
 
 ScenarioReport run_scenario_report(const std::string& scenario_name, const std::string& filter_name,
-                                   const MonteCarloConfig& config, const std::filesystem::path& out_dir,
+                                   const MonteCarloParams& config, const std::filesystem::path& out_dir,
                                    bool plots, const std::string& tag) {
   const auto scenario = make_scenario(scenario_name);
   const FilterEntry& filter = find_filter(filter_name);

@@ -27,7 +27,7 @@ struct ScenarioReport {
 /// `tag` names the files and the summary entry (default: the filter's
 /// name), so one filter can run twice with different options.
 ScenarioReport run_scenario_report(const std::string& scenario_name, const std::string& filter_name,
-                                   const MonteCarloConfig& config, const std::filesystem::path& out_dir,
+                                   const MonteCarloParams& config, const std::filesystem::path& out_dir,
                                    bool plots, const std::string& tag = {});
 
 /// Step budget in ns from microseconds (CLI unit).

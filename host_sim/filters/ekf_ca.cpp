@@ -36,7 +36,7 @@ SimRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options)
   radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
   const auto init = radar_initiator<SimRadarTracker<EkfCa<Scalar>>>(radar, T::from_double(p.max_speed_mps),
                                                                      T::from_double(p.init_accel_sigma_mps2), p);
-  TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
+  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
   SimRadarTracker<EkfCa<Scalar>> tracker(EkfCa<Scalar>(motion, radar), init, config);
   apply_measurement_noise(tracker, p);

@@ -20,7 +20,7 @@ namespace {
 template <class Q>
 host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& options) {
   const RadarTrackerParams p = radar_tracker_params(options);
-  const RadarTrackerScalars<Q> s = radar_tracker_scalars<Q>(p);
+  const RadarTrackerConfig<Q> s = radar_tracker_config<Q>(p);
   CaMotion<Q> motion;
   motion.qj = s.qj;
   CaPolarRadar<Q> radar;
@@ -28,7 +28,7 @@ host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& option
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   const auto init =
       radar_initiator<host::BoardRadarTracker<EkfCa<Q>>>(radar, s.max_speed_mps, s.init_accel_sigma_mps2, p);
-  TrackerConfig<Q, 2> config = radar_tracker_config<Q>(p, s);
+  TrackerConfig<Q, 2> config = tracker_config_of<Q>(p, s);
   apply_gate_options<Q>(options, config);
   host::BoardRadarTracker<EkfCa<Q>> tracker(EkfCa<Q>(motion, radar), init, config);
   apply_measurement_noise(tracker, p);  // built without the adaptive noise: refuses a gain

@@ -39,7 +39,7 @@ FilterSetup setup_with(const FilterOptions& options, const char* scalar) {
 template <class Scalar>
 host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOptions& options) {
   const RadarRangeRateTrackerParams p = ekf_ca_rr_params(options);
-  const RadarRangeRateTrackerScalars<Scalar> s = radar_range_rate_tracker_scalars<Scalar>(p);
+  const RadarRangeRateTrackerConfig<Scalar> s = radar_range_rate_tracker_config<Scalar>(p);
   // What make_radar_range_rate_tracker() builds, plus the confirmed-track
   // gate, as make_ekf_ca_tracker() does.
   CaMotion<Scalar> motion;
@@ -50,7 +50,7 @@ host::BoardRadarTracker<EkfCaRr<Scalar>> make_ekf_ca_rr_tracker(const FilterOpti
   radar.sigma_range_rate_mps = s.sigma_range_rate_mps;
   const auto init = radar_initiator<host::BoardRadarTracker<EkfCaRr<Scalar>>>(radar, s.radar.max_speed_mps,
                                                                                s.radar.init_accel_sigma_mps2, p.radar);
-  TrackerConfig<Scalar, 3> config = radar_range_rate_tracker_config<Scalar>(p, s);
+  TrackerConfig<Scalar, 3> config = tracker_config_of<Scalar>(p, s);
   apply_gate_options<Scalar>(options, config);
   host::BoardRadarTracker<EkfCaRr<Scalar>> tracker(EkfCaRr<Scalar>(motion, radar), init, config);
   apply_measurement_noise(tracker, p.radar);  // built without the adaptive noise: refuses a gain

@@ -126,7 +126,7 @@ SimRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options)
   const RadarImm<Scalar> prototype = make_radar_imm<Scalar>(p);
   const auto init = radar_initiator<SimRadarTracker<RadarImm<Scalar>>>(
       prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2), tp);
-  TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(tp);
+  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(tp);
   apply_gate_options<Scalar>(options, config);
   SimRadarTracker<RadarImm<Scalar>> tracker(prototype, init, config);
   apply_measurement_noise(tracker, tp);

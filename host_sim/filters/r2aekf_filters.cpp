@@ -54,7 +54,7 @@ host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, co
   const RadarTrackerParams p = radar_tracker_params(options);
   const auto init = radar_initiator<host::BoardRadarTracker<Filter>>(
       prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2), p);
-  TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
+  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
   host::BoardRadarTracker<Filter> tracker(prototype, init, config);
   apply_measurement_noise(tracker, p);  // built without the adaptive noise: refuses a gain

@@ -37,7 +37,7 @@ StreamRunResult run_family(StreamInput stream, const FilterOptions& options, std
   radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
   const auto init =
       radar_initiator<Tracker>(radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2), p);
-  TrackerConfig<Scalar, 2> config = radar_tracker_config<Scalar>(p);
+  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(p);
   apply_gate_options<Scalar>(options, config);
   // The tracker holds the whole track table: keep it off the stack.
   auto tracker = std::make_unique<Tracker>(Filter(motion, radar), init, config);

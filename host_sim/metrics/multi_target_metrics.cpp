@@ -67,7 +67,7 @@ struct Hysteresis {
 
 }  // namespace
 
-Gospa gospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaConfig& c) {
+Gospa gospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaParams& c) {
   check_sizes(truths.size(), tracks.size());
   const double cp = std::pow(c.cutoff_m, c.order);
   Gospa g;
@@ -99,7 +99,7 @@ Gospa gospa(std::span<const Position2> truths, std::span<const Position2> tracks
   return g;
 }
 
-double ospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaConfig& c) {
+double ospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaParams& c) {
   check_sizes(truths.size(), tracks.size());
   if (truths.empty() && tracks.empty()) return 0.0;
   if (truths.empty() || tracks.empty()) return c.cutoff_m;
@@ -122,7 +122,7 @@ double ospa(std::span<const Position2> truths, std::span<const Position2> tracks
   return std::pow((total + cp * (n - static_cast<double>(small.size()))) / n, 1.0 / c.order);
 }
 
-MultiTargetRunMetrics compute_multi_target_metrics(std::span<const MultiTargetStep> steps, const SpaConfig& c,
+MultiTargetRunMetrics compute_multi_target_metrics(std::span<const MultiTargetStep> steps, const SpaParams& c,
                                                    std::size_t persistence_steps) {
   MultiTargetRunMetrics m;
   if (steps.empty()) return m;

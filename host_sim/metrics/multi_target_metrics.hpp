@@ -21,7 +21,7 @@ struct Position2 {
   double y_m = 0.0;
 };
 
-struct SpaConfig {
+struct SpaParams {
   double cutoff_m = 500.0;  ///< c: a localisation error counts at most c; a miss or a false track c / 2^(1/p) (GOSPA).
   double order = 2.0;       ///< p.
 };
@@ -40,12 +40,12 @@ struct Gospa {
 /// GOSPA (alpha = 2) between truths and tracks: the assignment of pairs
 /// closer than c minimising the sum of d^p plus c^p/2 per unassigned truth
 /// or track. Both empty: 0.
-Gospa gospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaConfig& c);
+Gospa gospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaParams& c);
 
 /// OSPA: ((min over assignments of the smaller set into the larger of the
 /// sum of min(d, c)^p) + c^p * (n - m)) / n)^(1/p), with m <= n the set
 /// sizes; 0 if both are empty, c if one is.
-double ospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaConfig& c);
+double ospa(std::span<const Position2> truths, std::span<const Position2> tracks, const SpaParams& c);
 
 /// One step of a run: every target's true position (all targets exist in
 /// every step) and the confirmed tracks reported.
@@ -85,7 +85,7 @@ struct MultiTargetRunMetrics {
 
 /// @param persistence_steps how long a changed assignment must hold to be
 ///        a swap or a fragmentation (1: every change counts).
-MultiTargetRunMetrics compute_multi_target_metrics(std::span<const MultiTargetStep> steps, const SpaConfig& c,
+MultiTargetRunMetrics compute_multi_target_metrics(std::span<const MultiTargetStep> steps, const SpaParams& c,
                                                    std::size_t persistence_steps = 3);
 
 }  // namespace kestrel::sim

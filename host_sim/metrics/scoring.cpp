@@ -28,7 +28,7 @@ double position_nees(double ex, double ey, double p_xx, double p_xy, double p_yy
 }
 
 std::vector<ScoredStep> score_run(const StreamRunResult& run, const std::vector<TruthSample>& truth,
-                                  const ScoringConfig& config) {
+                                  const ScoringParams& config) {
   std::vector<ScoredStep> steps;
   for (std::size_t k = 0; k < run.frames.size(); ++k) {
     const FrameOutcome& f = run.frames[k];

@@ -36,7 +36,7 @@ struct ScoredStep {
   double nis = 0.0;                        ///< NIS of the scored track's update (NaN if it coasted).
 };
 
-struct ScoringConfig {
+struct ScoringParams {
   std::size_t first_scored_step = 2;  ///< Frames k < this are not scored.
 };
 
@@ -47,6 +47,6 @@ double position_nees(double ex, double ey, double p_xx, double p_xy, double p_yy
 /// Score every frame that reached the tracker and has truth at its time
 /// (matched to the microsecond).
 std::vector<ScoredStep> score_run(const StreamRunResult& run, const std::vector<TruthSample>& truth,
-                                  const ScoringConfig& config);
+                                  const ScoringParams& config);
 
 }  // namespace kestrel::sim

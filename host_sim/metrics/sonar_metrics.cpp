@@ -159,8 +159,8 @@ SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint
   return s;
 }
 
-SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioConfig& scenario, const SonarTrackerParams& params,
-                                      const SonarMonteCarloConfig& config) {
+SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioParams& scenario, const SonarTrackerParams& params,
+                                            const SonarMonteCarloParams& config) {
   SonarMonteCarloResult result;
   result.runs.resize(config.runs);
   for_each_index(

@@ -69,7 +69,7 @@ struct SonarSummary {
 
 SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint64_t budget_ns);
 
-struct SonarMonteCarloConfig {
+struct SonarMonteCarloParams {
   std::size_t runs = 200;
   std::uint64_t base_seed = 0;   ///< Run i uses seed base_seed + i.
   unsigned jobs = 1;
@@ -84,7 +84,7 @@ struct SonarMonteCarloResult {
 
 /// Runs are independent and each writes its own slot: the figures do not
 /// depend on `jobs` (step times do).
-SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioConfig& scenario, const SonarTrackerParams& params,
-                                      const SonarMonteCarloConfig& config);
+SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioParams& scenario, const SonarTrackerParams& params,
+                                            const SonarMonteCarloParams& config);
 
 }  // namespace kestrel::sim

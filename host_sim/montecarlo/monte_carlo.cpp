@@ -41,7 +41,7 @@ RunRecord record_of(const RunDetail& d) {
   return r;
 }
 
-MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& filter, const MonteCarloConfig& config) {
+MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& filter, const MonteCarloParams& config) {
   MonteCarloResult result;
   result.runs.resize(config.runs);
   const std::string label(filter.name);

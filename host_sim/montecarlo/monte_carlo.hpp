@@ -17,13 +17,13 @@
 
 namespace kestrel::sim {
 
-struct MonteCarloConfig {
+struct MonteCarloParams {
   std::size_t runs = 20;
   std::uint64_t base_seed = 0;
   unsigned jobs = 1;                ///< Worker threads (>= 1).
   std::uint64_t budget_ns = 1'000'000;  ///< Step overrun threshold.
   FilterOptions options;
-  ScoringConfig scoring;
+  ScoringParams scoring;
 };
 
 /// The mode probabilities of the scored track at one scored step.
@@ -72,7 +72,7 @@ struct MonteCarloSummary {
 
 RunRecord record_of(const RunDetail& detail);
 
-MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& filter, const MonteCarloConfig& config);
+MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& filter, const MonteCarloParams& config);
 
 MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t budget_ns);
 

@@ -18,7 +18,7 @@ namespace kestrel::sim {
 namespace {
 
 template <template <class, std::size_t, std::size_t> class Associator>
-StreamRunResult run_with(const MultiRunConfig& config, std::vector<std::uint8_t> bytes,
+StreamRunResult run_with(const MultiRunParams& config, std::vector<std::uint8_t> bytes,
                          const typename MultiTargetTracker<EkfCa<double>, Associator>::AssociatorParams& params) {
   // The associator's parameters do not depend on the filter.
   if (config.filter == MultiFilter::kImm) {
@@ -78,7 +78,7 @@ std::vector<MultiTargetStep> multi_target_steps(const ScenarioRun& run, const St
   return steps;
 }
 
-MultiRunDetail run_multi_once(const Scenario& scenario, std::uint64_t seed, const MultiRunConfig& config) {
+MultiRunDetail run_multi_once(const Scenario& scenario, std::uint64_t seed, const MultiRunParams& config) {
   const ScenarioRun generated = scenario.generate(seed);
   std::vector<std::uint8_t> bytes = encode_stream(generated.frames);
   MultiRunDetail d;

@@ -48,7 +48,7 @@ enum class MultiFilter { kEkfCa, kImm };
 MultiFilter multi_filter_by_name(const std::string& name);
 const char* multi_filter_name(MultiFilter f);
 
-struct MultiRunConfig {
+struct MultiRunParams {
   MultiAssociator associator = MultiAssociator::kGlobalNearestNeighbour;
   MultiFilter filter = MultiFilter::kEkfCa;
   /// qj and the radar tracker's keys (filters/settings.hpp): defaults,
@@ -57,7 +57,7 @@ struct MultiRunConfig {
   FilterOptions options;
   /// Gate of tentative tracks alone (default: gate_probability, 0.999).
   std::optional<GateProbability> gate_tentative;
-  SpaConfig spa;                        ///< c and p of OSPA and GOSPA.
+  SpaParams spa;                        ///< c and p of OSPA and GOSPA.
   std::size_t persistence_steps = 3;    ///< Of swaps and fragmentation.
   std::uint64_t budget_ns = 1'000'000;
 };
@@ -71,7 +71,7 @@ using MultiTargetTracker = Tracker<Filter, TwoPointHypothesesInitiator<CaMotion<
 
 /// The filter every track starts from, by the config's settings.
 template <class Filter>
-Filter multi_target_filter(const MultiRunConfig& config) {
+Filter multi_target_filter(const MultiRunParams& config) {
   if constexpr (std::is_same_v<Filter, RadarImm<double>>) {
     return make_radar_imm<double>(imm_params(config.options));
   } else {
@@ -87,13 +87,13 @@ Filter multi_target_filter(const MultiRunConfig& config) {
 
 template <class Filter, template <class, std::size_t, std::size_t> class Associator>
 std::unique_ptr<MultiTargetTracker<Filter, Associator>> make_multi_target_tracker(
-    const MultiRunConfig& config,
+    const MultiRunParams& config,
     const typename MultiTargetTracker<Filter, Associator>::AssociatorParams& params = {}) {
   using T = MultiTargetTracker<Filter, Associator>;
   const RadarTrackerParams p = radar_tracker_params(config.options);
   const Filter prototype = multi_target_filter<Filter>(config);
   const auto init = radar_initiator<T>(prototype.measurement(), p.max_speed_mps, p.init_accel_sigma_mps2, p);
-  typename T::Config tc = radar_tracker_config<double>(p);
+  typename T::Config tc = tracker_config_of<double>(p);
   FilterOptions gate = config.options;
   gate.board_gate = true;
   apply_gate_options<double>(gate, tc);
@@ -115,7 +115,7 @@ struct MultiRunDetail {
 };
 
 /// Generate `scenario` with `seed`, run the tracker over its wire stream and score it.
-MultiRunDetail run_multi_once(const Scenario& scenario, std::uint64_t seed, const MultiRunConfig& config);
+MultiRunDetail run_multi_once(const Scenario& scenario, std::uint64_t seed, const MultiRunParams& config);
 
 /// The scored steps of a run: every target and the confirmed tracks per frame.
 std::vector<MultiTargetStep> multi_target_steps(const ScenarioRun& run, const StreamRunResult& stream);

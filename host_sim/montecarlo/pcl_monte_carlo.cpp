@@ -8,8 +8,8 @@
 
 namespace kestrel::sim {
 
-PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioConfig& scenario, const PclTrackerParams& params,
-                                        const PclMonteCarloConfig& config) {
+PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioParams& scenario, const PclTrackerParams& params,
+                                        const PclMonteCarloParams& config) {
   PclMonteCarloResult result;
   result.runs.resize(config.runs);
   for_each_index(

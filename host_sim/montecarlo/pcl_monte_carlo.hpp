@@ -16,7 +16,7 @@
 
 namespace kestrel::sim {
 
-struct PclMonteCarloConfig {
+struct PclMonteCarloParams {
   std::size_t runs = 200;
   std::uint64_t base_seed = 0;
   unsigned jobs = 1;
@@ -31,7 +31,7 @@ struct PclMonteCarloResult {
   PclRunOutput first_output;        ///< Run 0's tracker output.
 };
 
-PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioConfig& scenario, const PclTrackerParams& params,
-                                        const PclMonteCarloConfig& config);
+PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioParams& scenario, const PclTrackerParams& params,
+                                        const PclMonteCarloParams& config);
 
 }  // namespace kestrel::sim

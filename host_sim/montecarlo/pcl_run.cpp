@@ -79,7 +79,7 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const PclTargetLocator&
   host::StreamFileFeed feed(std::move(stream));
   host::SteadyClock clock;
   Sink sink(std::max<std::size_t>(frames_in_stream, 1) * kTracks);
-  hal::PclAdapterConfig adapter_config;
+  hal::PclAdapterParams adapter_config;
   adapter_config.carrier_hz = params.carrier_hz;
   const Adapter adapter(tracker.get(), adapter_config);
   auto runner = std::make_unique<Runner>(feed, clock, *tracker, adapter, sink, budget_ns);
@@ -163,7 +163,7 @@ std::size_t pcl_track_capacity(std::size_t scan_capacity) {
   throw std::invalid_argument("PCL scan capacity must be 32 or 64, not " + std::to_string(scan_capacity));
 }
 
-PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario) {
+PclTrackerParams pcl_params_for(const PclScenarioParams& scenario) {
   PclTrackerParams p;
   p.carrier_hz = scenario.carrier_hz;
   p.sigma_rb_m = scenario.sigma_rb_m;
@@ -205,7 +205,7 @@ PclRunOutput run_composed(std::vector<std::uint8_t> stream, const PclTargetLocat
 }  // namespace
 
 PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
-                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const PclScenarioParams& scenario, const PclTrackerParams& params,
                             const TrackerPolicies& policies, std::uint64_t budget_ns) {
   const TargetIndexByContent by_content(reference);
   return run_pcl_stream(std::move(stream), PclTargetLocator(std::cref(by_content)), scenario, params, policies,
@@ -213,7 +213,7 @@ PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<
 }
 
 PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const PclTargetLocator& reference,
-                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const PclScenarioParams& scenario, const PclTrackerParams& params,
                             const TrackerPolicies& policies, std::uint64_t budget_ns) {
   if (scenario.scan_capacity == 32) {
     return run_composed<kPclMaxTracks, 32>(std::move(stream), reference, params, policies, budget_ns);
@@ -225,7 +225,7 @@ PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const PclTargetLoc
   return {};
 }
 
-PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
+PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioParams& scenario, const PclTrackerParams& params,
                      const TrackerPolicies& policies, std::uint64_t budget_ns) {
   PclRunOutput out = run_pcl_stream(encode_pcl_stream(run), run.frames, scenario, params, policies, budget_ns);
   if (out.frames.size() != run.frames.size()) throw std::runtime_error("PCL stream ended early");

@@ -61,12 +61,12 @@ struct PclRunOutput {
 /// sigma_Rb, sigma_fD, and for the policies that read them P_D and the
 /// clutter density (the false-alarm rate a sensor's CFAR is set for); the
 /// track-management defaults are PclTrackerParams'.
-PclTrackerParams pcl_params_for(const PclScenarioConfig& scenario);
+PclTrackerParams pcl_params_for(const PclScenarioParams& scenario);
 
 /// Run the PCL tracker composed of `policies` with `params` over the run's
 /// frames. The scan capacity is the scenario's (32 or 64; others throw
 /// std::invalid_argument).
-PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenario, const PclTrackerParams& params,
+PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioParams& scenario, const PclTrackerParams& params,
                      const TrackerPolicies& policies, std::uint64_t budget_ns);
 
 /// The same over a PCL byte stream (any bytes: one outcome per Runner
@@ -75,7 +75,7 @@ PclRunOutput run_pcl(const PclScenarioRun& run, const PclScenarioConfig& scenari
 /// found by the frame's content, so frames dropped, repeated or re-timed
 /// keep it.
 PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const std::vector<PclFrameRecord>& reference,
-                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const PclScenarioParams& scenario, const PclTrackerParams& params,
                             const TrackerPolicies& policies, std::uint64_t budget_ns);
 
 /// Names the target's candidate in a frame as it reached the tracker: its
@@ -85,7 +85,7 @@ using PclTargetLocator = std::function<int(const hal::Frame&)>;
 /// The same with the target's candidate named by `locate` (a replay finds
 /// it from its truth CSV, see metrics/replay_scoring.hpp).
 PclRunOutput run_pcl_stream(std::vector<std::uint8_t> stream, const PclTargetLocator& locate,
-                            const PclScenarioConfig& scenario, const PclTrackerParams& params,
+                            const PclScenarioParams& scenario, const PclTrackerParams& params,
                             const TrackerPolicies& policies, std::uint64_t budget_ns);
 
 /// The run's frames as the wire byte stream the sensor sends.

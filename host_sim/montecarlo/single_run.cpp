@@ -36,7 +36,7 @@ std::vector<OnTargetTracks> on_target_tracks(const RunDetail& d) {
 
 RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> frames,
                           std::vector<TruthSample> truth, const FilterEntry& filter, const FilterOptions& options,
-                          std::uint64_t budget_ns, const ScoringConfig& scoring, double period_s,
+                          std::uint64_t budget_ns, const ScoringParams& scoring, double period_s,
                           double loss_threshold_m) {
   RunDetail d;
   d.frames = std::move(frames);
@@ -49,7 +49,7 @@ RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> fram
 }
 
 RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const FilterEntry& filter,
-                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring,
+                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringParams& scoring,
                             std::optional<hal::asterix::Cat062Source> cat062) {
   ScenarioRun generated = scenario.generate(seed);
   std::vector<std::uint8_t> bytes = encode_stream(generated.frames);

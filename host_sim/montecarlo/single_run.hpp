@@ -33,14 +33,14 @@ struct RunDetail {
 /// @param period_s T for the loss time; @param loss_threshold_m L.
 RunDetail evaluate_stream(StreamInput stream, std::vector<MeasurementFrame> frames,
                           std::vector<TruthSample> truth, const FilterEntry& filter, const FilterOptions& options,
-                          std::uint64_t budget_ns, const ScoringConfig& scoring, double period_s,
+                          std::uint64_t budget_ns, const ScoringParams& scoring, double period_s,
                           double loss_threshold_m);
 
 /// Generate the scenario with `seed`, encode it, run and score it.
 /// @param cat062 when set, the run also writes its reports as CAT062
 ///        (RunDetail::stream.cat062) with this source.
 RunDetail run_scenario_once(const Scenario& scenario, std::uint64_t seed, const FilterEntry& filter,
-                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringConfig& scoring,
+                            const FilterOptions& options, std::uint64_t budget_ns, const ScoringParams& scoring,
                             std::optional<hal::asterix::Cat062Source> cat062 = std::nullopt);
 
 /// The confirmed tracks within `loss_threshold_m` of the truth at each

@@ -30,7 +30,7 @@ std::vector<std::uint8_t> encode_sonar_stream(const SonarScenarioRun& run) {
   return bytes;
 }
 
-SonarTrackerParams sonar_params_for(const SonarScenarioConfig& scenario, const SonarTrackerParams& base) {
+SonarTrackerParams sonar_params_for(const SonarScenarioParams& scenario, const SonarTrackerParams& base) {
   if (scenario.beacons_m.size() > static_cast<std::size_t>(kSonarBeacons)) {
     throw std::invalid_argument("the UW runner is built for at most 4 beacons");
   }
@@ -51,7 +51,7 @@ SonarRunOutput run_sonar(const SonarScenarioRun& run, const SonarTrackerParams& 
 }
 
 SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTrackerParams& params,
-                          std::uint64_t budget_ns) {
+                                std::uint64_t budget_ns) {
   using Report = DoubleSonarTracker::Report;
   using Sink = host::MemorySink<Report>;
   using Runner = hal::Runner<host::Feed, host::Clock, DoubleSonarTracker, hal::SonarAdapter, Sink>;

@@ -47,8 +47,8 @@ struct SonarRunOutput {
 
 /// Tracker parameters for a scenario: the installation (beacons, seabed,
 /// TOA sigma) from the scenario, everything else from `base`.
-SonarTrackerParams sonar_params_for(const SonarScenarioConfig& scenario,
-                                      const SonarTrackerParams& base = SonarTrackerParams{});
+SonarTrackerParams sonar_params_for(const SonarScenarioParams& scenario,
+                                    const SonarTrackerParams& base = SonarTrackerParams{});
 
 /// Run the tracker with `params` over the run's frames (std::runtime_error
 /// if the Runner does not see exactly one frame per wire frame).
@@ -58,7 +58,7 @@ SonarRunOutput run_sonar(const SonarScenarioRun& run, const SonarTrackerParams& 
 /// outcome per Runner frame, malformed or refused ones included, until the
 /// stream is used up).
 SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTrackerParams& params,
-                          std::uint64_t budget_ns);
+                                std::uint64_t budget_ns);
 
 /// The run's frames as the wire byte stream a sonar sends.
 std::vector<std::uint8_t> encode_sonar_stream(const SonarScenarioRun& run);

@@ -45,7 +45,7 @@ void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<Pcl
   }
 }
 
-void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfig& scenario,
+void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioParams& scenario,
                         const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tol) {
   const double lambda = pcl_lambda_m(scenario);
   const std::size_t n = std::min(run.frames.size(), out.frames.size());
@@ -103,7 +103,7 @@ void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<P
   if (!f) throw std::runtime_error("cannot write '" + path.string() + "'");
 }
 
-nlohmann::json pcl_scenario_json(const PclScenarioConfig& sc) {
+nlohmann::json pcl_scenario_json(const PclScenarioParams& sc) {
   return {{"name", sc.name},
           {"frames", sc.frames},
           {"frame_period_s", sc.frame_period_s},
@@ -135,7 +135,7 @@ nlohmann::json pcl_tracker_json(const PclTrackerParams& p, const TrackerPolicies
           {"missed_track_probability", p.missed_track_probability}};
 }
 
-nlohmann::json pcl_summary_json(const PclScenarioConfig& sc, const PclTrackerParams& p, const PclMonteCarloConfig& c,
+nlohmann::json pcl_summary_json(const PclScenarioParams& sc, const PclTrackerParams& p, const PclMonteCarloParams& c,
                                 const PclSummary& s) {
   return {
       {"schema", "kestrel-sim-pcl-summary/1"},

@@ -27,7 +27,7 @@ namespace kestrel::sim {
 void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<PclRunMetrics>& runs);
 
 /// pcl_truth.csv, pcl_candidates.csv and pcl_tracks.csv of one run.
-void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioConfig& scenario,
+void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioParams& scenario,
                         const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tolerance);
 
 /// pcl_tracks.csv alone: every confirmed track of every frame (`pcl` for
@@ -39,11 +39,11 @@ void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<P
                           const PclTolerance& tolerance);
 
 /// The "scenario" (sensor) and "tracker" objects of pcl_summary.json.
-nlohmann::json pcl_scenario_json(const PclScenarioConfig& scenario);
+nlohmann::json pcl_scenario_json(const PclScenarioParams& scenario);
 nlohmann::json pcl_tracker_json(const PclTrackerParams& params, const TrackerPolicies& policies);
 
-nlohmann::json pcl_summary_json(const PclScenarioConfig& scenario, const PclTrackerParams& params,
-                                const PclMonteCarloConfig& config, const PclSummary& summary);
+nlohmann::json pcl_summary_json(const PclScenarioParams& scenario, const PclTrackerParams& params,
+                                const PclMonteCarloParams& config, const PclSummary& summary);
 
 /// Run plots/pcl_plots.py over the run-0 CSVs of `dir` (best effort, like
 /// the other plots: a failure prints a warning). @return true on success.

@@ -66,7 +66,7 @@ struct Study {
 
   MonteCarloResult monte_carlo(const Scenario& scenario, const FilterEntry& filter, const FilterOptions& options,
                                std::size_t runs, std::uint64_t seed) const {
-    MonteCarloConfig c;
+    MonteCarloParams c;
     c.runs = runs;
     c.base_seed = seed;
     c.jobs = o.jobs;

@@ -74,7 +74,7 @@ void write_sonar_run_csvs(const std::filesystem::path& dir, const SonarScenarioR
 }
 
 void write_sonar_track_csv(const std::filesystem::path& path, const std::vector<SonarFrameOutcome>& frames,
-                        const std::vector<double>& time_s) {
+                           const std::vector<double>& time_s) {
   const std::size_t n = std::min(frames.size(), time_s.size());
   std::ofstream f = open_out(path);
   f << "frame,time_s,status,reported,initialised,predict_only,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"
@@ -118,7 +118,7 @@ nlohmann::json sonar_params_json(const SonarTrackerParams& p) {
           {"project_depth", p.project_depth}};
 }
 
-nlohmann::json sonar_scenario_json(const SonarScenarioConfig& sc) {
+nlohmann::json sonar_scenario_json(const SonarScenarioParams& sc) {
   nlohmann::json beacons = nlohmann::json::array();
   for (const auto& b : sc.beacons_m) beacons.push_back({b[0], b[1], b[2]});
   return {{"name", sc.name},
@@ -135,8 +135,8 @@ nlohmann::json sonar_scenario_json(const SonarScenarioConfig& sc) {
           {"accel_sigma_mps2", sc.accel_sigma_mps2}};
 }
 
-nlohmann::json sonar_summary_json(const SonarScenarioConfig& sc, const SonarTrackerParams& params,
-                               const SonarMonteCarloConfig& config, const SonarSummary& s) {
+nlohmann::json sonar_summary_json(const SonarScenarioParams& sc, const SonarTrackerParams& params,
+                                  const SonarMonteCarloParams& config, const SonarSummary& s) {
   nlohmann::json j;
   j["schema"] = "kestrel-sim-sonar-summary/1";
   j["scenario"] = sonar_scenario_json(sc);

@@ -38,10 +38,10 @@ void write_sonar_track_csv(const std::filesystem::path& path, const std::vector<
                         const std::vector<double>& time_s);
 
 /// The "scenario" object of sonar_summary.json (the installation and noise).
-nlohmann::json sonar_scenario_json(const SonarScenarioConfig& scenario);
+nlohmann::json sonar_scenario_json(const SonarScenarioParams& scenario);
 nlohmann::json sonar_params_json(const SonarTrackerParams& params);
-nlohmann::json sonar_summary_json(const SonarScenarioConfig& scenario, const SonarTrackerParams& params,
-                               const SonarMonteCarloConfig& config, const SonarSummary& summary);
+nlohmann::json sonar_summary_json(const SonarScenarioParams& scenario, const SonarTrackerParams& params,
+                               const SonarMonteCarloParams& config, const SonarSummary& summary);
 
 /// Run plots/sonar_plots.py over the CSVs of `dir` (best effort: a failure
 /// prints a warning). @return true on success.

@@ -60,7 +60,7 @@ struct Sample {
 };
 
 /// One attempt at a trajectory; false if it left the scenario's box.
-bool simulate_drone(const PclScenarioConfig& c, std::uint64_t sub_seed, std::vector<Sample>& out) {
+bool simulate_drone(const PclScenarioParams& c, std::uint64_t sub_seed, std::vector<Sample>& out) {
   Rng r(sub_seed);
   // Start well inside the annulus, north of the receiver.
   const double r0 = r.uniform(c.r_min_m + 150.0, c.r_max_m - 150.0);
@@ -132,15 +132,15 @@ struct CandidateSi {
 
 }  // namespace
 
-PclScenarioConfig pcl002_config() {
-  PclScenarioConfig c;
+PclScenarioParams pcl002_config() {
+  PclScenarioParams c;
   c.name = "pcl002";
   c.description = "PCL-002: DTV passive radar, drone 300-900 m, Pd 0.9, Poisson(21) clutter + 0-3 ridge, 32/scan";
   return c;
 }
 
-PclScenarioConfig pcl002_hard_config() {
-  PclScenarioConfig c = pcl002_config();
+PclScenarioParams pcl002_hard_config() {
+  PclScenarioParams c = pcl002_config();
   c.name = "pcl002-hard";
   c.description = "PCL-002 hard: Poisson(63) clutter, Pd 0.7, 64 candidates per scan";
   c.clutter_mean = 63.0;
@@ -151,7 +151,7 @@ PclScenarioConfig pcl002_hard_config() {
 
 std::vector<std::string> pcl_scenario_names() { return {"pcl002", "pcl002-hard"}; }
 
-PclScenarioConfig pcl_config_by_name(const std::string& name) {
+PclScenarioParams pcl_config_by_name(const std::string& name) {
   std::string key(name);
   for (char& ch : key) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   if (key == "pcl002") return pcl002_config();
@@ -159,9 +159,9 @@ PclScenarioConfig pcl_config_by_name(const std::string& name) {
   throw std::invalid_argument("unknown PCL scenario '" + name + "' (known: pcl002, pcl002-hard)");
 }
 
-double pcl_lambda_m(const PclScenarioConfig& config) { return kSpeedOfLightMps / config.carrier_hz; }
+double pcl_lambda_m(const PclScenarioParams& config) { return kSpeedOfLightMps / config.carrier_hz; }
 
-PclScenarioRun generate_pcl(const PclScenarioConfig& c, std::uint64_t seed) {
+PclScenarioRun generate_pcl(const PclScenarioParams& c, std::uint64_t seed) {
   PclScenarioRun run;
   std::vector<Sample> samples;
   std::uint32_t attempt = 0;

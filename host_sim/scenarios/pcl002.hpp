@@ -19,7 +19,7 @@
 
 namespace kestrel::sim {
 
-struct PclScenarioConfig {
+struct PclScenarioParams {
   std::string name;                   ///< "pcl002" or "pcl002-hard".
   std::string description;            ///< One line for listings.
   double frame_period_s = 0.5;        ///< T, s.
@@ -44,10 +44,10 @@ struct PclScenarioConfig {
 };
 
 /// PCL-002 and its hard variant (docs/scenarios.md).
-PclScenarioConfig pcl002_config();
-PclScenarioConfig pcl002_hard_config();
+PclScenarioParams pcl002_config();
+PclScenarioParams pcl002_hard_config();
 /// By name ("pcl002", "pcl002-hard", case-insensitive). Throws std::invalid_argument.
-PclScenarioConfig pcl_config_by_name(const std::string& name);
+PclScenarioParams pcl_config_by_name(const std::string& name);
 /// The names pcl_config_by_name knows, in listing order.
 std::vector<std::string> pcl_scenario_names();
 
@@ -77,9 +77,9 @@ struct PclScenarioRun {
 };
 
 /// Truth and frames of the run with this seed (bit-reproducible).
-PclScenarioRun generate_pcl(const PclScenarioConfig& config, std::uint64_t seed);
+PclScenarioRun generate_pcl(const PclScenarioParams& config, std::uint64_t seed);
 
 /// The wavelength of the scenario's carrier, m.
-double pcl_lambda_m(const PclScenarioConfig& config);
+double pcl_lambda_m(const PclScenarioParams& config);
 
 }  // namespace kestrel::sim

@@ -27,8 +27,8 @@ double path_length(const SonarTruth& t, const std::array<double, 3>& b, hal::Toa
 
 }  // namespace
 
-SonarScenarioConfig uw003_config() {
-  SonarScenarioConfig c;
+SonarScenarioParams uw003_config() {
+  SonarScenarioParams c;
   c.name = "uw003";
   c.description = "UW-003: 4 surface beacons, seabed 150 m, direct + reflected TOA, 3 ms, 5 % outliers";
   return c;
@@ -38,9 +38,9 @@ std::vector<std::string> sonar_scenario_names() {
   return {"uw003", "uw003-direct", "uw003-clean", "uw003-d100", "uw003-1ms"};
 }
 
-SonarScenarioConfig sonar_config_by_name(const std::string& name) {
+SonarScenarioParams sonar_config_by_name(const std::string& name) {
   const std::string n = lower(name);
-  SonarScenarioConfig c = uw003_config();
+  SonarScenarioParams c = uw003_config();
   if (n == "uw003") return c;
   c.name = n;
   if (n == "uw003-direct") {
@@ -62,7 +62,7 @@ SonarScenarioConfig sonar_config_by_name(const std::string& name) {
   return c;
 }
 
-SonarScenarioRun generate_sonar(const SonarScenarioConfig& cfg, std::uint64_t seed) {
+SonarScenarioRun generate_sonar(const SonarScenarioParams& cfg, std::uint64_t seed) {
   if (cfg.beacons_m.empty() || cfg.beacons_m.size() * 2 > hal::kMaxSonarArrivals) {
     throw std::invalid_argument("UW scenario: 1..8 beacons");
   }

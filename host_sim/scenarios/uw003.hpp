@@ -20,7 +20,7 @@
 
 namespace kestrel::sim {
 
-struct SonarScenarioConfig {
+struct SonarScenarioParams {
   std::string name;                  ///< "uw003", "uw003-direct", ...
   std::string description;           ///< One line for listings.
   double period_s = 1.0;             ///< T, s.
@@ -41,10 +41,10 @@ struct SonarScenarioConfig {
 };
 
 /// UW-003 and its variants (docs/scenarios.md).
-SonarScenarioConfig uw003_config();
+SonarScenarioParams uw003_config();
 /// By name: uw003, uw003-direct, uw003-clean, uw003-d100, uw003-1ms
 /// (case-insensitive). Throws std::invalid_argument.
-SonarScenarioConfig sonar_config_by_name(const std::string& name);
+SonarScenarioParams sonar_config_by_name(const std::string& name);
 /// Every UW scenario name, uw003 first.
 std::vector<std::string> sonar_scenario_names();
 
@@ -78,6 +78,6 @@ struct SonarScenarioRun {
 };
 
 /// Truth and frames of the run with this seed (bit-reproducible).
-SonarScenarioRun generate_sonar(const SonarScenarioConfig& config, std::uint64_t seed);
+SonarScenarioRun generate_sonar(const SonarScenarioParams& config, std::uint64_t seed);
 
 }  // namespace kestrel::sim

@@ -12,8 +12,8 @@ using namespace kestrel::m0plus;
 // The real-valued parameters become Q31.32 constants at compile time: the
 // image converts nothing from double at run time.
 constexpr kestrel::RadarTrackerParams kParams{};
-constexpr kestrel::RadarTrackerScalars<Scalar> kScalars = kestrel::radar_tracker_scalars<Scalar>(kParams);
-Tracker g_tracker = kestrel::make_radar_tracker<Scalar, kMaxTracks, kMaxPlots>(kParams, kScalars);
+constexpr kestrel::RadarTrackerConfig<Scalar> kConfig = kestrel::radar_tracker_config<Scalar>(kParams);
+Tracker g_tracker = kestrel::make_radar_tracker<Scalar, kMaxTracks, kMaxPlots>(kParams, kConfig);
 Feed g_feed{uart0_rx_ring()};
 Clock g_clock{};
 Sink g_sink{uart0_tx_ring()};

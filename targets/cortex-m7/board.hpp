@@ -59,7 +59,7 @@ inline Tracker make_tracker() {
 }
 /// The adapter reads the tracker's tracks to rank an over-capacity frame.
 inline Adapter make_adapter(const Tracker& tracker) {
-  return Adapter(&tracker, hal::PclAdapterConfig{kPclParams.carrier_hz});
+  return Adapter(&tracker, hal::PclAdapterParams{kPclParams.carrier_hz});
 }
 
 static_assert(Tracker::Scan::kMaxMeasurements <= hal::kMaxPclCandidates,

@@ -106,7 +106,7 @@ const char* check_pcl_tracker_invariants_for(std::span<const std::uint8_t> in, F
   auto tracker = std::make_unique<Tracker>(make_pcl_tracker<Scalar, kPclFuzzTracks, kPclFuzzCandidates>(p));
   auto before = std::make_unique<Tracker>(*tracker);
   auto frame = std::make_unique<hal::Frame>();
-  hal::PclAdapterConfig adapter_config;
+  hal::PclAdapterParams adapter_config;
   adapter_config.carrier_hz = p.carrier_hz;
   const hal::PclAdapter<Tracker> adapter(tracker.get(), adapter_config);
   const double lambda_m = kSpeedOfLightMps / p.carrier_hz;

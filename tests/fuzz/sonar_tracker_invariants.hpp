@@ -6,7 +6,7 @@
 //
 // The bytes are read as a sequence of wire sonar frames (hal::Frame), each
 // converted by the board adapter (hal::SonarAdapter) and stepped by the
-// UW-003 tracker (four beacons, geometry from hal::SonarConfig's defaults)
+// UW-003 tracker (four beacons, geometry from hal::SonarAdapterParams's defaults)
 // in double and float (the scalars sonar_tracker.hpp is built for).
 // Per frame, one op byte: bits 0-1 choose the time step (fuzz_bytes.hpp:
 // the next 1 s ping; a signed step of up to +-32 s; any int64 time; a gap of
@@ -137,7 +137,7 @@ bool same_sonar_state(const Tracker& a, const Tracker& b) {
 template <class Scalar>
 const char* check_sonar_tracker_invariants_for(std::span<const std::uint8_t> in, FuzzTally& tally) {
   using Tracker = SonarTracker<Scalar, kSonarFuzzBeacons>;
-  const SonarTrackerParams p = hal::sonar_tracker_params(hal::SonarConfig{});
+  const SonarTrackerParams p = hal::sonar_tracker_params(hal::SonarAdapterParams{});
   // Heap, not stack, as the other harnesses: a tracker is a few KiB.
   auto tracker = std::make_unique<Tracker>(make_sonar_tracker<Scalar, kSonarFuzzBeacons>(p));
   auto before = std::make_unique<Tracker>(*tracker);

@@ -31,7 +31,7 @@ inline hal::RadarPlot random_radar_plot(std::mt19937& rng) {
 }
 inline hal::SonarArrival random_sonar_arrival(std::mt19937& rng) {
   return hal::SonarArrival{random_int<std::uint32_t>(rng), random_int<std::uint8_t>(rng),
-                         (rng() & 1u) != 0 ? hal::ToaPath::kReflected : hal::ToaPath::kDirect};
+                           (rng() & 1u) != 0 ? hal::ToaPath::kReflected : hal::ToaPath::kDirect};
 }
 inline hal::PclCandidate random_pcl_candidate(std::mt19937& rng) {
   return hal::PclCandidate{random_int<std::uint32_t>(rng), random_int<std::int32_t>(rng),

@@ -308,7 +308,7 @@ elseif(CHECK STREQUAL "config_set_sensor")
   execute_process(COMMAND ${SIM} run -s uw003 --runs 1 --no-plots --set per_channel_gate=false --set gate_k_sigma=3
                           --out ${OUT}/sonar
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 0 OR NOT out MATCHES "UW EKF, no gate,")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "sonar EKF, no gate,")
     message(FATAL_ERROR "run -s uw003 --set failed or did not use it (${rc}):\n${out}${err}")
   endif()
   file(READ ${OUT}/sonar/sonar_summary.json summary)

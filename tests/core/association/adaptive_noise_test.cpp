@@ -128,7 +128,7 @@ TEMPLATE_TEST_CASE("Scenario: the IMM and the EKF fuse with a scaled R and keep 
   auto imm = kestrel::make_radar_imm<S>(kestrel::RadarImmParams{});
   kestrel::RadarTrackerParams p;
   p.qj = 16.0;
-  const auto s = kestrel::radar_tracker_scalars<S>(p);
+  const auto s = kestrel::radar_tracker_config<S>(p);
   kestrel::CaMotion<S> motion;
   motion.qj = s.qj;
   kestrel::CaPolarRadar<S> radar;

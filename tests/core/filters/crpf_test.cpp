@@ -53,7 +53,7 @@ RunResult mc001_middle_run(std::uint64_t run, std::uint64_t filter_seed) {
   const auto truth = kestrel::test::mc001_truth(100, 0.1, noise);
   Motion motion;
   motion.sa = 0.1;
-  kestrel::CrpfParams<double> params;
+  kestrel::CrpfConfig<double> params;
   params.seed = filter_seed;
   params.refuse_indefinite = false;  // MC-001 scores the estimate alone
   Crpf<kN> f(motion, middle_radar(), params);
@@ -137,7 +137,7 @@ SCENARIO("the CRPF gives the recorded bits on MC-001's middle cell", "[crpf][det
 SCENARIO("the CRPF refuses bad input and stays exactly as it was", "[crpf][status]") {
   Motion motion;
   motion.sa = 0.1;
-  kestrel::CrpfParams<double> params;
+  kestrel::CrpfConfig<double> params;
   params.seed = 99;
   Crpf<64> f(motion, middle_radar(), params);
   Crpf<64> twin(motion, middle_radar(), params);
@@ -170,7 +170,7 @@ SCENARIO("selection concentrates the cloud on the particles of least risk", "[cr
   GIVEN("a wide cloud (no kick, so selection alone moves it) and a measurement of a point inside it") {
     Motion motion;
     motion.sa = 0.1;
-    kestrel::CrpfParams<double> params;
+    kestrel::CrpfConfig<double> params;
     params.kick_sigma = 0.0;
     params.seed = 5;
     params.refuse_indefinite = false;  // copies only: the selected cloud is singular by design
@@ -273,7 +273,7 @@ SCENARIO("a CRPF whose cloud covariance is singular refuses the step unless told
     const Eigen::Vector4d x0(1000.0, 10.0, 1000.0, 5.0);
     const Eigen::Matrix4d P0 = Eigen::Vector4d(100.0, 0.0, 100.0, 0.0).asDiagonal();
     WHEN("positive definiteness is required (the default, what a tracker needs)") {
-      kestrel::CrpfParams<double> params;
+      kestrel::CrpfConfig<double> params;
       params.seed = 3;
       Crpf<64> f(motion, middle_radar(), params);
       const Eigen::Vector4d x_before = f.x();
@@ -285,7 +285,7 @@ SCENARIO("a CRPF whose cloud covariance is singular refuses the step unless told
       }
     }
     WHEN("it is not (paper 001's scoring of the estimate)") {
-      kestrel::CrpfParams<double> params;
+      kestrel::CrpfConfig<double> params;
       params.seed = 3;
       params.refuse_indefinite = false;
       Crpf<64> f(motion, middle_radar(), params);

@@ -46,7 +46,7 @@ std::uint64_t crpf_trace_hash(std::uint64_t run, std::uint64_t seed, int beta) {
   R radar;
   radar.sigma_range_m = static_cast<S>(1.0);
   radar.sigma_bearing_rad = static_cast<S>(0.1 * kDegree);
-  CrpfParams<S> params;
+  CrpfConfig<S> params;
   params.seed = seed;
   params.beta = beta;
   params.refuse_indefinite = false;

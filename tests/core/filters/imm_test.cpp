@@ -343,8 +343,8 @@ namespace {
 /// A switching matrix with unequal rows and off-diagonal proportions, so a
 /// wrong share of the leaving probability shows.
 template <class S>
-typename kestrel::ImmParams<S, 3>::Matrix uneven_switching() {
-  typename kestrel::ImmParams<S, 3>::Matrix m;
+typename kestrel::ImmConfig<S, 3>::Matrix uneven_switching() {
+  typename kestrel::ImmConfig<S, 3>::Matrix m;
   m << S(0.8), S(0.15), S(0.05), S(0.1), S(0.85), S(0.05), S(0.2), S(0.1), S(0.7);
   return m;
 }
@@ -360,7 +360,7 @@ double entry_tolerance() {
 TEMPLATE_TEST_CASE("Scenario: the switching matrix follows dt by mean sojourn times", "[imm][switching]", double,
                    float) {
   using S = TestType;
-  using Params = kestrel::ImmParams<S, 3>;
+  using Params = kestrel::ImmConfig<S, 3>;
   Params params;
   params.switching = uneven_switching<S>();
   params.switching_period_s = S(0.5);
@@ -402,7 +402,7 @@ TEMPLATE_TEST_CASE("Scenario: the switching matrix follows dt by mean sojourn ti
 TEMPLATE_TEST_CASE("Scenario: the scaled switching matrix stays stochastic from 1 ms to 100 s", "[imm][switching]",
                    double, float) {
   using S = TestType;
-  using Params = kestrel::ImmParams<S, 3>;
+  using Params = kestrel::ImmConfig<S, 3>;
   Params params;
   params.switching = uneven_switching<S>();
   params.switching_period_s = S(0.5);

@@ -707,7 +707,7 @@ TEMPLATE_TEST_CASE("Scenario: R2-AEKF steps allocate nothing, alone and in the t
   kestrel::RadarTrackerParams params;
   kestrel::TwoPointInitiator<kestrel::CaMotion<S>, kestrel::CaPolarRadar<S>> init{radar<S>(), S(1000), S(30)};
   kestrel::RadarTracker<Filter<S>, 4, 8> tracker(Filter<S>(motion<S>(), radar<S>(), Config<S>{}), init,
-                                                 kestrel::radar_tracker_config<S>(params));
+                                                 kestrel::tracker_config_of<S>(params));
   std::size_t allocations = 0;
   for (int k = 0; k < 20; ++k) {
     typename decltype(tracker)::Scan scan;

@@ -138,10 +138,10 @@ template <class Scalar>
 S1Tracker<Scalar> make_s1_tracker(bool tuned) {
   static constexpr RadarTrackerParams kParams{};
   static constexpr RadarTrackerParams kTuned = tuned_params();
-  static constexpr RadarTrackerScalars<Scalar> kScalars = radar_tracker_scalars<Scalar>(kParams);
-  static constexpr RadarTrackerScalars<Scalar> kTunedScalars = radar_tracker_scalars<Scalar>(kTuned);
-  return tuned ? make_radar_tracker<Scalar, 4, 4>(kTuned, kTunedScalars)
-               : make_radar_tracker<Scalar, 4, 4>(kParams, kScalars);
+  static constexpr RadarTrackerConfig<Scalar> kConfig = radar_tracker_config<Scalar>(kParams);
+  static constexpr RadarTrackerConfig<Scalar> kTunedConfig = radar_tracker_config<Scalar>(kTuned);
+  return tuned ? make_radar_tracker<Scalar, 4, 4>(kTuned, kTunedConfig)
+               : make_radar_tracker<Scalar, 4, 4>(kParams, kConfig);
 }
 
 /// Runs S1 (or S1n) through the tracker on Scalar; visit(k, sample, tracker)

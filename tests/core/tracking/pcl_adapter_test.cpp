@@ -64,7 +64,7 @@ SCENARIO("a PCL frame becomes [Rb m, dRb m/s] with dRb = -lambda fD", "[pcl][ada
   }
   GIVEN("a float scan through the Runner adapter object") {
     using PclF = kestrel::PclTracker<kestrel::PclKf<float>, 16, 8>;
-    const kestrel::hal::PclAdapter<PclF> adapter(nullptr, kestrel::hal::PclAdapterConfig{});
+    const kestrel::hal::PclAdapter<PclF> adapter(nullptr, kestrel::hal::PclAdapterParams{});
     PclF::Scan scan;
     REQUIRE(adapter(f, scan) == Status::kOk);
     THEN("the same values to float precision") {
@@ -126,7 +126,7 @@ SCENARIO("an over-capacity frame without tracks drops the lowest SNR first, then
 
 SCENARIO("an over-capacity frame drops the candidates farthest from every track first", "[pcl][adapter][capacity]") {
   auto tracker = kestrel::make_pcl_tracker<double>(kestrel::PclTrackerParams{});
-  const kestrel::hal::PclAdapter<PclT> adapter(&tracker, kestrel::hal::PclAdapterConfig{});
+  const kestrel::hal::PclAdapter<PclT> adapter(&tracker, kestrel::hal::PclAdapterParams{});
   // A confirmed track closing at 12 m/s from 1500 m.
   auto truth = [](int k) { return 1500.0 - 6.0 * k; };
   for (int k = 0; k < 6; ++k) {

@@ -521,7 +521,7 @@ SCENARIO("the sonar adapter turns wire frames into TOA scans", "[sonar][hal]") {
     }
   }
   GIVEN("an installation config in millimetres") {
-    kestrel::hal::SonarConfig cfg;
+    kestrel::hal::SonarAdapterParams cfg;
     cfg.seabed_depth_mm = 100000;
     cfg.sigma_toa_ns = 1000000;
     const auto p = kestrel::hal::sonar_tracker_params(cfg);

@@ -125,14 +125,14 @@ Tracker make_composed(const typename Tracker::ManagerT& manager) {
   using S = typename Tracker::Scalar;
   kestrel::RadarTrackerParams p;
   p.qj = 16.0;
-  const auto s = kestrel::radar_tracker_scalars<S>(p);
+  const auto s = kestrel::radar_tracker_config<S>(p);
   kestrel::CaMotion<S> motion;
   motion.qj = s.qj;
   kestrel::CaPolarRadar<S> radar;
   radar.sigma_range_m = s.sigma_range_m;
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   return Tracker(kestrel::EkfCa<S>(motion, radar), {radar, s.max_speed_mps, s.init_accel_sigma_mps2},
-                 kestrel::radar_tracker_config<S>(p, s), manager);
+                 kestrel::tracker_config_of<S>(p, s), manager);
 }
 
 template <class S>

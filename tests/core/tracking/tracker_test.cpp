@@ -249,7 +249,7 @@ SCENARIO("two separated targets get two tracks", "[tracker]") {
 SCENARIO("an explicit confirmed-gate threshold replaces the chi-square quantile", "[tracker][gate]") {
   kestrel::RadarTrackerParams p;
   p.qj = 16.0;
-  auto config = kestrel::radar_tracker_config<double>(p);
+  auto config = kestrel::tracker_config_of<double>(p);
   config.gate_confirmed_threshold = 1e12;  // effectively ungated
   kestrel::CaMotion<double> motion;
   motion.qj = p.qj;

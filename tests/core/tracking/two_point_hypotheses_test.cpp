@@ -30,7 +30,7 @@ Tracker make(std::uint8_t extra = 1, bool from_pairs = true) {
   using S = typename Tracker::Scalar;
   kestrel::RadarTrackerParams p;
   p.qj = 16.0;
-  const auto s = kestrel::radar_tracker_scalars<S>(p);
+  const auto s = kestrel::radar_tracker_config<S>(p);
   kestrel::CaMotion<S> motion;
   motion.qj = s.qj;
   kestrel::CaPolarRadar<S> radar;
@@ -44,7 +44,7 @@ Tracker make(std::uint8_t extra = 1, bool from_pairs = true) {
     init.seed_extra_frames = extra;
     init.seed_from_pairs = from_pairs;
   }
-  return Tracker(kestrel::EkfCa<S>(motion, radar), init, kestrel::radar_tracker_config<S>(p, s));
+  return Tracker(kestrel::EkfCa<S>(motion, radar), init, kestrel::tracker_config_of<S>(p, s));
 }
 
 /// Straight-line target from (-15000, 8000) at (200, 50) m/s, seen at

@@ -54,7 +54,7 @@ SCENARIO("the fixed-point EKF-CA builds of kestrel-sim follow the double build o
   const FilterEntry& q31 = find_filter("ekf-ca-q31_32");
   const FilterEntry& q23 = find_filter("ekf-ca-q23_40");
   const FilterOptions options;  // S1/S2 sensor (docs/scenarios.md), qj 1.6, ungated confirmed tracks
-  const ScoringConfig scoring;
+  const ScoringParams scoring;
   double dev31 = 0, dev23 = 0, rmse31 = 0, rmse23 = 0;
   int other31 = 0, other23 = 0;
   std::uint32_t saturations = 0;

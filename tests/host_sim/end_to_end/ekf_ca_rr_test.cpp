@@ -145,7 +145,7 @@ SCENARIO("EKF-CA with range rate refuses range-bearing-only streams", "[host_sim
   GIVEN("s1 (no range rate) run through ekf-ca-rr") {
     const auto scenario = make_scenario("s1");
     const RunDetail d = run_scenario_once(*scenario, 0, find_filter("ekf-ca-rr"), FilterOptions{}, 1'000'000,
-                                          ScoringConfig{});
+                                          ScoringParams{});
     THEN("every frame is refused with kWrongKind, no step runs and no track is reported") {
       REQUIRE(d.stream.frames.size() == 300);
       for (const FrameOutcome& f : d.stream.frames) {
@@ -168,7 +168,7 @@ SCENARIO("EKF-CA with range rate holds the S1rr and S2rr targets", "[host_sim][e
         options.qj = 160.0;  // the tuned EKF-CA of docs/references.md; at 1.6 the filter is inconsistent (docs/range_rate.md)
         std::vector<RunRecord> runs;
         for (std::uint64_t seed = 0; seed < 3; ++seed) {
-          runs.push_back(record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000, ScoringConfig{})));
+          runs.push_back(record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000, ScoringParams{})));
         }
         THEN("every scored frame has one confirmed track, with one id, and every frame steps") {
           for (const RunRecord& r : runs) {

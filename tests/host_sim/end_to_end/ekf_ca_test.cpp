@@ -31,7 +31,7 @@ SCENARIO("EKF-CA (qj 1.6) holds the S1 and S2 targets", "[host_sim][e2e]") {
       std::vector<RunRecord> runs;
       std::vector<std::size_t> scored;
       for (std::uint64_t seed = 0; seed < 5; ++seed) {
-        const RunDetail d = run_scenario_once(*scenario, seed, filter, options, 1'000'000, ScoringConfig{});
+        const RunDetail d = run_scenario_once(*scenario, seed, filter, options, 1'000'000, ScoringParams{});
         runs.push_back(record_of(d));
         scored.push_back(d.steps.size());
       }

@@ -105,14 +105,14 @@ TrackedRun track_with(const WireRun& run) {
   using Tracker = kestrel::Tracker<F, kestrel::TwoPointInitiator<Motion, Radar>, 4, 4>;
   kestrel::RadarTrackerParams p;
   p.qj = run.qj;
-  const auto s = kestrel::radar_tracker_scalars<S>(p);
+  const auto s = kestrel::radar_tracker_config<S>(p);
   Motion motion;
   motion.qj = s.qj;
   Radar radar;
   radar.sigma_range_m = s.sigma_range_m;
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   Tracker tracker(make_filter<F>(motion, radar), {radar, s.max_speed_mps, s.init_accel_sigma_mps2},
-                  kestrel::radar_tracker_config<S>(p, s));
+                  kestrel::tracker_config_of<S>(p, s));
 
   TrackedRun out;
   typename Tracker::Scan scan;

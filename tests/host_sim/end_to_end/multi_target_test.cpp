@@ -24,7 +24,7 @@ SCENARIO("GNN is the default associator with more than one target", "[host_sim][
 
 SCENARIO("The crossing pair is tracked through the crossing", "[host_sim][multitarget]") {
   const auto s = make_scenario("crossing");
-  MultiRunConfig config;
+  MultiRunParams config;
   config.associator = default_multi_associator(s->info());
   const MultiRunDetail d = run_multi_once(*s, 100000, config);
   THEN("both targets are held at the end by two confirmed tracks and no track is false") {
@@ -44,7 +44,7 @@ SCENARIO("The oracle associator takes no false alarm", "[host_sim][multitarget]"
   const auto s = make_scenario("raid");
   const std::uint64_t seed = 100001;
   const ScenarioRun generated = s->generate(seed);
-  MultiRunConfig config;
+  MultiRunParams config;
   config.associator = MultiAssociator::kOracle;
   const MultiRunDetail d = run_multi_once(*s, seed, config);
   REQUIRE(d.stream.frames.size() == generated.frames.size());
@@ -78,7 +78,7 @@ SCENARIO("The IMM runs in the multi-target tracker and holds the crossing pair",
   CHECK(multi_filter_by_name("ekf-ca") == MultiFilter::kEkfCa);
   CHECK_THROWS_AS(multi_filter_by_name("ukf"), std::invalid_argument);
   const auto s = make_scenario("crossing");
-  MultiRunConfig config;
+  MultiRunParams config;
   config.filter = MultiFilter::kImm;
   // The setting docs/multitarget.md reports for the IMM (chosen on these
   // tuning seeds): a stickier switching matrix than the S1/S2 default.
@@ -97,10 +97,10 @@ SCENARIO("The IMM runs in the multi-target tracker and holds the crossing pair",
 
 SCENARIO("On the raid the IMM's GOSPA is below EKF-CA's on the same seeds", "[host_sim][multitarget][imm]") {
   const auto s = make_scenario("raid");
-  MultiRunConfig ekf;
+  MultiRunParams ekf;
   ekf.options.radar = {{"confirm_m", 5.0}, {"confirm_n", 6.0}, {"max_speed_mps", 400.0}};
   ekf.gate_tentative = kestrel::GateProbability::k99;
-  MultiRunConfig imm = ekf;
+  MultiRunParams imm = ekf;
   imm.filter = MultiFilter::kImm;
   imm.options.imm = {"p_stay=0.98"};
   double gospa_ekf = 0.0;

@@ -31,8 +31,8 @@ SCENARIO("R2-AEKF default mode holds S1 and S2 and beats EKF-CA at qj 1.6", "[ho
       double peak_ekf = 0.0;
       std::vector<RunRecord> runs;
       for (std::uint64_t seed = 0; seed < 5; ++seed) {
-        const RunDetail r2 = run_scenario_once(*scenario, seed, find_filter("r2aekf"), options, 1'000'000, ScoringConfig{});
-        const RunDetail ekf = run_scenario_once(*scenario, seed, find_filter("ekf-ca"), options, 1'000'000, ScoringConfig{});
+        const RunDetail r2 = run_scenario_once(*scenario, seed, find_filter("r2aekf"), options, 1'000'000, ScoringParams{});
+        const RunDetail ekf = run_scenario_once(*scenario, seed, find_filter("ekf-ca"), options, 1'000'000, ScoringParams{});
         runs.push_back(record_of(r2));
         rmse_r2 += r2.metrics.rmse_m / 5.0;
         rmse_ekf += ekf.metrics.rmse_m / 5.0;

@@ -57,7 +57,7 @@ VariantFigures run_variant(const std::string& scenario_name, const std::string& 
   VariantFigures f;
   for (std::uint64_t seed = first_seed; seed < first_seed + runs; ++seed) {
     const RunRecord r =
-        record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000'000, ScoringConfig{}));
+        record_of(run_scenario_once(*scenario, seed, filter, options, 1'000'000'000, ScoringParams{}));
     f.held_fraction += r.continuity.held_fraction / static_cast<double>(runs);
     f.track_ids += static_cast<double>(r.continuity.track_ids_on_target) / static_cast<double>(runs);
     f.episodes += r.metrics.episodes.size();

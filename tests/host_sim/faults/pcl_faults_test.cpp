@@ -136,7 +136,7 @@ Observed observe(const PclRunOutput& out) {
 
 SCENARIO("injected PCL stream faults give their status counts, hold the drone and add no ghost",
          "[host_sim][faults][pcl]") {
-  const PclScenarioConfig config = pcl002_config();
+  const PclScenarioParams config = pcl002_config();
   const PclScenarioRun run = generate_pcl(config, 1);
   const kestrel::PclTrackerParams params = pcl_params_for(config);
   std::vector<Fault> faults = make_faults(run);

@@ -140,7 +140,7 @@ Observed observe(const SonarRunOutput& out) {
 
 SCENARIO("injected sonar stream faults give their status counts, keep or restart the track by rule, and recover",
          "[host_sim][faults][sonar]") {
-  const SonarScenarioConfig config = uw003_config();
+  const SonarScenarioParams config = uw003_config();
   const SonarScenarioRun run = generate_sonar(config, 1);
   const kestrel::SonarTrackerParams params = sonar_params_for(config);
   const std::vector<Fault> faults = make_faults(run);

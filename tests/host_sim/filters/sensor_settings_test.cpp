@@ -91,7 +91,7 @@ SCENARIO("Sonar tracker keys set SonarTrackerParams", "[settings][sonar]") {
     WHEN("a real, a boolean, a gate and a whole key are set") {
       SonarTrackerParams p = base;
       apply_sonar_settings(sets({"gate_k_sigma=3", "per_channel_gate=false", "ellipsoidal_gate=true",
-                              "ellipsoid_probability=0.95", "reacquire_after_lost_frames=0"}),
+                                 "ellipsoid_probability=0.95", "reacquire_after_lost_frames=0"}),
                         p);
       THEN("each reaches its field") {
         CHECK(p.gate_k_sigma == 3.0);

@@ -130,7 +130,7 @@ Table radar_table(const char* filter) {
   FilterOptions options;
   options.qj = 50.0;
   options.confirmed_gate_d2 = 16.0;
-  const RunDetail d = run_scenario_once(*scenario, 1, find_filter(filter), options, 1000000000, ScoringConfig{});
+  const RunDetail d = run_scenario_once(*scenario, 1, find_filter(filter), options, 1000000000, ScoringParams{});
   Table t{"frame,status,track_id,confirmed,associated,measurement_index,age,hits,misses,x_m,y_m,vx_mps,vy_mps,"
           "p_xx,p_xy,p_yy,nis",
           {}};
@@ -161,7 +161,7 @@ TEST_CASE("Golden replay: radar S2 through the board loop, EKF-CA in double, flo
 }
 
 TEST_CASE("Golden replay: PCL pcl002 through the board loop, default policies", "[host_sim][golden]") {
-  const PclScenarioConfig c = pcl002_config();
+  const PclScenarioParams c = pcl002_config();
   const PclScenarioRun run = generate_pcl(c, 1);
   const PclRunOutput out = run_pcl(run, c, pcl_params_for(c), TrackerPolicies{}, 1000000000);
   Table t{"frame,status,scan_count,tracks_in_table,track_id,associated,frame_index,age,hits,misses,rb_m,drb_mps,"
@@ -183,7 +183,7 @@ TEST_CASE("Golden replay: PCL pcl002 through the board loop, default policies", 
 
 TEST_CASE("Golden replay: sonar uw003 through the board loop, the default sonar tracker",
           "[host_sim][golden]") {
-  const SonarScenarioConfig c = uw003_config();
+  const SonarScenarioParams c = uw003_config();
   const SonarScenarioRun run = generate_sonar(c, 1);
   const SonarRunOutput out = run_sonar(run, sonar_params_for(c), 1000000000);
   Table t{"frame,status,reported,initialised,predict_only,present,fused,gated,x_m,y_m,z_m,vx_mps,vy_mps,vz_mps,c_mps,"

@@ -23,7 +23,7 @@ SCENARIO("GOSPA and OSPA pick the optimal assignment", "[host_sim][metrics][mult
     const std::vector<Position2> truths{{0, 0}, {6, 0}};
     const std::vector<Position2> tracks{{5, 0}, {12, 0}};
     WHEN("p = 1 and c = 100 m") {
-      const SpaConfig c{100.0, 1.0};
+      const SpaParams c{100.0, 1.0};
       const Gospa g = gospa(truths, tracks, c);
       THEN("GOSPA is 11 m with truth 0 on track 0 and OSPA is 11 / 2 m") {
         CHECK_THAT(g.gospa, WithinAbs(11.0, kTol));
@@ -34,7 +34,7 @@ SCENARIO("GOSPA and OSPA pick the optimal assignment", "[host_sim][metrics][mult
       }
     }
     WHEN("p = 2 and c = 100 m") {
-      const SpaConfig c{100.0, 2.0};
+      const SpaParams c{100.0, 2.0};
       THEN("GOSPA is sqrt(61) m and OSPA sqrt(61 / 2) m") {
         CHECK_THAT(gospa(truths, tracks, c).gospa, WithinAbs(std::sqrt(61.0), kTol));
         CHECK_THAT(ospa(truths, tracks, c), WithinAbs(std::sqrt(30.5), kTol));
@@ -44,7 +44,7 @@ SCENARIO("GOSPA and OSPA pick the optimal assignment", "[host_sim][metrics][mult
   GIVEN("two truths and one track 5 m from the first, c = 10 m, p = 2") {
     const std::vector<Position2> truths{{0, 0}, {100, 0}};
     const std::vector<Position2> tracks{{3, 4}};
-    const SpaConfig c{10.0, 2.0};
+    const SpaParams c{10.0, 2.0};
     THEN("GOSPA^2 = 25 + 100 / 2 for the missed target and OSPA^2 = (25 + 100) / 2") {
       const Gospa g = gospa(truths, tracks, c);
       CHECK_THAT(g.gospa, WithinAbs(std::sqrt(75.0), kTol));
@@ -57,7 +57,7 @@ SCENARIO("GOSPA and OSPA pick the optimal assignment", "[host_sim][metrics][mult
   GIVEN("a track beyond the cut-off of the only truth") {
     const std::vector<Position2> truths{{0, 0}};
     const std::vector<Position2> tracks{{20, 0}};
-    const SpaConfig c{10.0, 2.0};
+    const SpaParams c{10.0, 2.0};
     THEN("GOSPA counts a miss and a false track, c^2 / 2 each, and OSPA is c") {
       const Gospa g = gospa(truths, tracks, c);
       CHECK(g.missed == 1);
@@ -69,7 +69,7 @@ SCENARIO("GOSPA and OSPA pick the optimal assignment", "[host_sim][metrics][mult
   GIVEN("empty sets") {
     const std::vector<Position2> none;
     const std::vector<Position2> three{{0, 0}, {1, 0}, {2, 0}};
-    const SpaConfig c{10.0, 2.0};
+    const SpaParams c{10.0, 2.0};
     THEN("both empty is 0; three false tracks are sqrt(3 c^2 / 2) in GOSPA and c in OSPA") {
       CHECK(gospa(none, none, c).gospa == 0.0);
       CHECK(ospa(none, none, c) == 0.0);
@@ -95,7 +95,7 @@ MultiTargetStep step(double t, std::vector<std::pair<std::uint32_t, int>> on) {
 }  // namespace
 
 SCENARIO("Track swaps, fragmentation, false tracks and time to confirm", "[host_sim][metrics][multitarget]") {
-  const SpaConfig c{100.0, 2.0};
+  const SpaParams c{100.0, 2.0};
   GIVEN("two tracks that exchange their targets for good") {
     std::vector<MultiTargetStep> steps;
     for (int k = 0; k < 3; ++k) steps.push_back(step(k, {{1, 0}, {2, 1}}));

@@ -93,7 +93,7 @@ SCENARIO("PCL and sonar truth CSVs round-trip and name their kind", "[host_sim][
 SCENARIO("A PCL replay scored against its truth gives the generating run's metrics", "[host_sim][replay_scoring][pcl]") {
   for (const char* name : {"pcl002", "pcl002-hard"}) {
     GIVEN(std::string(name) + " seed 5, run as `pcl` runs it and replayed from its stream and truth CSV") {
-      const PclScenarioConfig c = pcl_config_by_name(name);
+      const PclScenarioParams c = pcl_config_by_name(name);
       const PclScenarioRun run = generate_pcl(c, 5);
       const PclTrackerParams params = pcl_params_for(c);
       const PclTolerance tol{};
@@ -128,7 +128,7 @@ SCENARIO("A PCL replay scored against its truth gives the generating run's metri
     }
   }
   GIVEN("pcl002 seed 5 with its first 10 frames dropped from the stream") {
-    const PclScenarioConfig c = pcl002_config();
+    const PclScenarioParams c = pcl002_config();
     PclScenarioRun run = generate_pcl(c, 5);
     const auto path = temp_path("pcl_dropped.truth.csv");
     write_pcl_truth_csv(path, run);
@@ -154,7 +154,7 @@ SCENARIO("A PCL replay scored against its truth gives the generating run's metri
 SCENARIO("A sonar replay scored against its truth gives the generating run's metrics", "[host_sim][replay_scoring][sonar]") {
   for (const char* name : {"uw003", "uw003-1ms"}) {
     GIVEN(std::string(name) + " seed 5, run as `sonar` runs it and replayed from its stream and truth CSV") {
-      const SonarScenarioConfig c = sonar_config_by_name(name);
+      const SonarScenarioParams c = sonar_config_by_name(name);
       const SonarScenarioRun run = generate_sonar(c, 5);
       const SonarTrackerParams params = sonar_params_for(c);
       const SonarRunMetrics want = score_sonar_run(run, run_sonar(run, params, kBudgetNs));

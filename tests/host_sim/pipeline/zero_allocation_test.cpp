@@ -56,7 +56,7 @@ SCENARIO("A raid run with the multi-target GNN tracker allocates nothing", "[hos
   GIVEN("the raid's 80 frames and the 64-track EKF-CA tracker with GNN, sized before the guard") {
     using Tracker = kestrel::sim::MultiTargetTracker<kestrel::EkfCa<double>, kestrel::GlobalNearestNeighbour>;
     auto bytes = kestrel::sim::encode_stream(kestrel::sim::make_scenario("raid")->generate(100002).frames);
-    kestrel::sim::MultiRunConfig config;
+    kestrel::sim::MultiRunParams config;
     config.options.radar = {{"confirm_m", 5.0}, {"confirm_n", 6.0}, {"max_speed_mps", 400.0}};
     auto tracker = kestrel::sim::make_multi_target_tracker<kestrel::EkfCa<double>, kestrel::GlobalNearestNeighbour>(config);
     kestrel::sim::StreamRun<Tracker> run(*tracker, std::move(bytes), 1'000'000);

@@ -16,7 +16,7 @@ using namespace kestrel::sim;  // NOLINT(google-build-using-namespace): test fil
 using Catch::Matchers::WithinAbs;
 
 SCENARIO("PCL-002 drones stay in the scenario box and within the acceleration limits", "[host_sim][scenarios][pcl]") {
-  const PclScenarioConfig c = pcl002_config();
+  const PclScenarioParams c = pcl002_config();
   double r_min = 1e9, r_max = 0.0, y_min = 1e9, z_min = 1e9, z_max = 0.0, v_max = 0.0;
   double along_max = 0.0, total_max = 0.0;
   for (std::uint64_t seed = 0; seed < 100; ++seed) {
@@ -58,7 +58,7 @@ SCENARIO("PCL-002 drones stay in the scenario box and within the acceleration li
 }
 
 SCENARIO("PCL-002 truth: Rb and fD follow the geometry", "[host_sim][scenarios][pcl]") {
-  const PclScenarioConfig c = pcl002_config();
+  const PclScenarioParams c = pcl002_config();
   const PclScenarioRun run = generate_pcl(c, 3);
   const double lambda = pcl_lambda_m(c);
   CHECK_THAT(lambda, WithinAbs(0.4277, 5e-5));
@@ -77,7 +77,7 @@ SCENARIO("PCL-002 truth: Rb and fD follow the geometry", "[host_sim][scenarios][
 }
 
 SCENARIO("PCL-002 frames: detection, noise, clutter and ridge as docs/scenarios.md describes", "[host_sim][scenarios][pcl]") {
-  const PclScenarioConfig c = pcl002_config();
+  const PclScenarioParams c = pcl002_config();
   std::size_t frames = 0, detections = 0, candidates = 0, ridge = 0;
   double se_rb = 0.0, se_fd = 0.0;
   for (std::uint64_t seed = 0; seed < 40; ++seed) {
@@ -133,7 +133,7 @@ SCENARIO("PCL-002 is reproducible bit for bit, and the hard variant is cut to th
   CHECK(same);
   CHECK(differs);
 
-  const PclScenarioConfig hard = pcl002_hard_config();
+  const PclScenarioParams hard = pcl002_hard_config();
   std::size_t over = 0, cut_detections = 0, detected = 0;
   for (std::uint64_t seed = 0; seed < 10; ++seed) {
     const PclScenarioRun run = generate_pcl(hard, seed);
@@ -211,8 +211,8 @@ SCENARIO("PCL metrics on a hand-made run", "[host_sim][metrics][pcl]") {
 }
 
 SCENARIO("the PCL tracker meets its accuracy goals on pcl002 through the board loop", "[host_sim][end_to_end][pcl]") {
-  const PclScenarioConfig sc = pcl002_config();
-  PclMonteCarloConfig c;
+  const PclScenarioParams sc = pcl002_config();
+  PclMonteCarloParams c;
   c.runs = 12;
   c.base_seed = 100;
   c.jobs = 1;
@@ -240,8 +240,8 @@ SCENARIO("the PCL tracker meets its accuracy goals on pcl002 through the board l
 
 SCENARIO("on pcl002-hard, PDA with the track score holds the drone and confirms almost no clutter",
          "[host_sim][end_to_end][pcl][policies]") {
-  const PclScenarioConfig sc = pcl002_hard_config();
-  PclMonteCarloConfig c;
+  const PclScenarioParams sc = pcl002_hard_config();
+  PclMonteCarloParams c;
   c.runs = 40;
   c.base_seed = 100;
   c.jobs = 2;

@@ -35,7 +35,7 @@ SCENARIO("Scenario and filter names map to their sensor kind", "[host_sim][senso
     CHECK(std::find(radar.begin(), radar.end(), "ekf-ca") != radar.end());
     CHECK(std::find(radar.begin(), radar.end(), "pcl-kf") == radar.end());
     CHECK(filter_kind("ekf-ca") == FrameKind::kRadar);
-    CHECK(filter_kind("UW-EKF") == FrameKind::kSonar);
+    CHECK(filter_kind("SONAR-EKF") == FrameKind::kSonar);
     CHECK_FALSE(filter_kind("nope").has_value());
   }
 }
@@ -43,9 +43,9 @@ SCENARIO("Scenario and filter names map to their sensor kind", "[host_sim][senso
 SCENARIO("A decoded stream's frames are counted by kind", "[host_sim][sensor_kind]") {
   GIVEN("a PCL stream followed by a sonar stream") {
     const PclScenarioRun pcl = generate_pcl(pcl002_config(), 3);
-    const SonarScenarioRun sonar = generate_sonar(sonar_config_by_name("uw003"), 3);
+    const SonarScenarioRun sonar_run = generate_sonar(sonar_config_by_name("uw003"), 3);
     std::vector<std::uint8_t> bytes = encode_pcl_stream(pcl);
-    const std::vector<std::uint8_t> sonar = encode_sonar_stream(sonar);
+    const std::vector<std::uint8_t> sonar = encode_sonar_stream(sonar_run);
     bytes.insert(bytes.end(), sonar.begin(), sonar.end());
     std::size_t skipped = 0;
     std::vector<MeasurementFrame> frames = decode_stream(bytes, skipped);
@@ -53,10 +53,11 @@ SCENARIO("A decoded stream's frames are counted by kind", "[host_sim][sensor_kin
     THEN("both kinds are counted and named") {
       const FrameKindCounts c = count_frame_kinds(frames);
       CHECK(c.pcl == pcl.frames.size());
-      CHECK(c.sonar == sonar.frames.size());
+      CHECK(c.sonar == sonar_run.frames.size());
       CHECK(c.radar == 0);
       CHECK(c.kinds() == 2);
-      CHECK(c.describe() == std::to_string(pcl.frames.size()) + " PCL, " + std::to_string(sonar.frames.size()) + " sonar");
+      CHECK(c.describe() ==
+            std::to_string(pcl.frames.size()) + " PCL, " + std::to_string(sonar_run.frames.size()) + " sonar");
     }
     THEN("a frame that did not decode counts as undecoded, not as radar") {
       frames.push_back(MeasurementFrame{});
@@ -70,7 +71,7 @@ SCENARIO("A decoded stream's frames are counted by kind", "[host_sim][sensor_kin
 
 SCENARIO("A PCL stream replayed without its reference gives the scenario run's tracks", "[host_sim][sensor_kind][pcl]") {
   GIVEN("pcl002 seed 3, run as `pcl` runs it and as `replay --stream` runs its stream") {
-    const PclScenarioConfig c = pcl002_config();
+    const PclScenarioParams c = pcl002_config();
     const PclScenarioRun run = generate_pcl(c, 3);
     const PclTrackerParams params = pcl_params_for(c);
     const PclRunOutput scenario_run = run_pcl(run, c, params, TrackerPolicies{}, 1'000'000'000);
@@ -99,7 +100,7 @@ SCENARIO("A PCL stream replayed without its reference gives the scenario run's t
 
 SCENARIO("A sonar stream replayed gives the scenario run's estimates with their frame times", "[host_sim][sensor_kind][sonar]") {
   GIVEN("uw003 seed 3") {
-    const SonarScenarioConfig c = sonar_config_by_name("uw003");
+    const SonarScenarioParams c = sonar_config_by_name("uw003");
     const SonarScenarioRun run = generate_sonar(c, 3);
     const SonarTrackerParams params = sonar_params_for(c);
     const SonarRunOutput a = run_sonar(run, params, 1'000'000'000);

@@ -25,7 +25,7 @@ double distance(const SonarTruth& t, double bx, double by, double bz, double z) 
 }  // namespace
 
 SCENARIO("UW-003 frames follow docs/scenarios.md", "[host_sim][scenarios][sonar]") {
-  const SonarScenarioConfig c = uw003_config();
+  const SonarScenarioParams c = uw003_config();
   GIVEN("200 seeded runs") {
     std::size_t arrivals = 0, outliers = 0;
     double noise_sum2 = 0.0, c_min = 1e9, c_max = 0.0, delay_min = 1.0, delay_max = 0.0;
@@ -189,11 +189,11 @@ SCENARIO("UW metrics on a hand-made run", "[host_sim][metrics][sonar]") {
 }
 
 SCENARIO("the sonar tracker through the board loop on UW-003", "[host_sim][end_to_end][sonar]") {
-  SonarMonteCarloConfig mc;
+  SonarMonteCarloParams mc;
   mc.runs = 20;
   mc.jobs = 2;
   const auto summary = [&](const char* scenario, double k, bool gate) {
-    const SonarScenarioConfig sc = sonar_config_by_name(scenario);
+    const SonarScenarioParams sc = sonar_config_by_name(scenario);
     kestrel::SonarTrackerParams p = sonar_params_for(sc);
     p.gate_k_sigma = k;
     p.per_channel_gate = gate;
@@ -218,9 +218,9 @@ SCENARIO("the sonar tracker through the board loop on UW-003", "[host_sim][end_t
     CHECK(k3.rmse_depth_m.mean * 3.0 < direct.rmse_depth_m.mean);
   }
   THEN("the figures do not depend on the number of worker threads") {
-    SonarMonteCarloConfig one = mc;
+    SonarMonteCarloParams one = mc;
     one.jobs = 1;
-    const SonarScenarioConfig sc = uw003_config();
+    const SonarScenarioParams sc = uw003_config();
     kestrel::SonarTrackerParams p = sonar_params_for(sc);
     p.gate_k_sigma = 3.0;
     const SonarSummary s1 = summarise_sonar(run_sonar_monte_carlo(sc, p, one).runs, one.budget_ns);
@@ -230,11 +230,11 @@ SCENARIO("the sonar tracker through the board loop on UW-003", "[host_sim][end_t
 }
 
 SCENARIO("the gate-truncation covariance and the depth projection", "[host_sim][end_to_end][sonar]") {
-  SonarMonteCarloConfig mc;
+  SonarMonteCarloParams mc;
   mc.runs = 40;
   mc.jobs = 2;
   const auto summary = [&](const char* scenario, bool truncation, bool projection) {
-    const SonarScenarioConfig sc = sonar_config_by_name(scenario);
+    const SonarScenarioParams sc = sonar_config_by_name(scenario);
     kestrel::SonarTrackerParams p = sonar_params_for(sc);
     p.gate_truncation_covariance = truncation;
     p.project_depth = projection;
@@ -251,7 +251,7 @@ SCENARIO("the gate-truncation covariance and the depth projection", "[host_sim][
     CHECK(with.rmse_3d_m.mean < without.rmse_3d_m.mean + 0.2);
   }
   THEN("no reported depth leaves the water, where without the projection direct-only runs go above the surface") {
-    const SonarScenarioConfig sc = sonar_config_by_name("uw003-direct");
+    const SonarScenarioParams sc = sonar_config_by_name("uw003-direct");
     const auto depth_range = [&](bool projection) {
       kestrel::SonarTrackerParams p = sonar_params_for(sc);
       p.project_depth = projection;

@@ -39,7 +39,7 @@ SCENARIO("Monte Carlo results do not depend on the thread count", "[host_sim][mo
   GIVEN("6 runs of S2 with EKF-CA") {
     const auto scenario = make_scenario("s2");
     const FilterEntry& filter = find_filter("ekf-ca");
-    MonteCarloConfig config;
+    MonteCarloParams config;
     config.runs = 6;
     config.base_seed = 100;
     WHEN("run with 1 and with 3 worker threads") {

@@ -39,10 +39,10 @@ constexpr std::size_t kCounted = kestrel::board::kWorstCaseCountedFrames;
 using TrackFilter = std::remove_cvref_t<decltype(std::declval<const Tracker&>().prototype_filter())>;
 #if defined(KESTREL_WF_CONSTEXPR_SCALARS)
 constexpr kestrel::RadarTrackerParams kParams{};
-constexpr kestrel::RadarTrackerScalars<Tracker::Scalar> kScalars =
-    kestrel::radar_tracker_scalars<Tracker::Scalar>(kParams);
+constexpr kestrel::RadarTrackerConfig<Tracker::Scalar> kConfig =
+    kestrel::radar_tracker_config<Tracker::Scalar>(kParams);
 Tracker make_board_tracker() {
-  return kestrel::make_radar_tracker<Tracker::Scalar, kMaxTracks, kMaxPlots, TrackFilter>(kParams, kScalars);
+  return kestrel::make_radar_tracker<Tracker::Scalar, kMaxTracks, kMaxPlots, TrackFilter>(kParams, kConfig);
 }
 #else
 Tracker make_board_tracker() {

@@ -33,7 +33,7 @@ namespace kestrel {
 
 /// CRPF tuning; the defaults are those of docs/filters.md.
 template <class S>
-struct CrpfParams {
+struct CrpfConfig {
   S lambda = lit<S>(0.8);      ///< Forgetting factor of the cost, (0, 1].
   int beta = 2;                ///< PMF exponent, integer 1..8.
   S delta = S(1);              ///< PMF offset, normalised-cost units (> 0).
@@ -90,7 +90,7 @@ class Crpf {
   using MeasCov = typename Measurement::NoiseCov;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
-  using Params = CrpfParams<Scalar>;
+  using Params = CrpfConfig<Scalar>;
   using KickFactor = Mat<Scalar, kStateDim, kKickDim>;
 
   Crpf() : Crpf(Motion{}, Measurement{}) {}

@@ -77,7 +77,7 @@ constexpr bool maps_every_component() {
 
 /// IMM parameters. valid() states what is required.
 template <class Scalar, int kModes>
-struct ImmParams {
+struct ImmConfig {
   using Matrix = Mat<Scalar, kModes, kModes>;
   using Probabilities = Vec<Scalar, kModes>;
 
@@ -183,7 +183,7 @@ class Imm {
   using CommonState = Vec<Scalar, kCommonDim>;
   using CommonCov = Mat<Scalar, kCommonDim, kCommonDim>;
   using Probabilities = Vec<Scalar, kModes>;
-  using Params = ImmParams<Scalar, kModes>;
+  using Params = ImmConfig<Scalar, kModes>;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   using Modes = std::tuple<ModeFilters...>;
@@ -244,7 +244,7 @@ class Imm {
   }
 
   /// Interaction (mixing) and mode-conditioned prediction by dt seconds,
-  /// with the switching matrix over dt (ImmParams::switching_over).
+  /// with the switching matrix over dt (ImmConfig::switching_over).
   /// @return kOk; kNonFinite (dt, a mode), kNotPositiveDefinite (a mode
   ///         refused, or the combined covariance), kOutOfRange (some c_j
   ///         not > 0: invalid switching matrix); the filter is unchanged on

@@ -40,7 +40,7 @@ struct RadarImmParams {
   /// Switching matrix p_ij (row: from, column: to) over switching_period_s.
   double switching[3][3] = {{0.8, 0.1, 0.1}, {0.1, 0.8, 0.1}, {0.1, 0.1, 0.8}};
   /// The period the matrix is given for, s: the scan period of S1/S2.
-  /// Other time steps scale it (ImmParams::switching_over); 0: per predict.
+  /// Other time steps scale it (ImmConfig::switching_over); 0: per predict.
   double switching_period_s = 0.5;
   double initial_probabilities[3] = {1.0 / 3, 1.0 / 3, 1.0 / 3};  ///< At reset().
   double min_probability = 1e-4;          ///< Floor of each mode probability.

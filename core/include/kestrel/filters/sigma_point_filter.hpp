@@ -165,12 +165,12 @@ class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet
 };
 
 /// Unscented Kalman filter (algorithm 8), the parameters of docs/filters.md by default:
-/// UnscentedParams<S, n>{alpha = 1, beta = 2, kappa = 3 - n}.
+/// UnscentedConfig<S, n>{alpha = 1, beta = 2, kappa = 3 - n}.
 template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
 using Ukf = SigmaPointFilter<Motion, Measurement, UnscentedPoints>;
 
 /// Central difference Kalman filter (algorithm 9), the parameter of docs/filters.md by
-/// default: CentralDifferenceParams<S>{h = sqrt(3)}.
+/// default: CentralDifferenceConfig<S>{h = sqrt(3)}.
 template <MotionModel Motion, MeasurementModelFor<Motion> Measurement>
 using Cdkf = SigmaPointFilter<Motion, Measurement, CentralDifferencePoints>;
 

@@ -32,7 +32,7 @@ inline constexpr int kSigmaPointCount = 2 * kN + 1;
 /// eq. 3.11-3.12). Defaults (docs/filters.md): alpha = 1, beta = 2 (optimal for a
 /// Gaussian prior), kappa = 3 - n.
 template <class S, int kN>
-struct UnscentedParams {
+struct UnscentedConfig {
   S alpha = S(1);       ///< Spread of the points around the mean, (0, 1].
   S beta = S(2);        ///< Prior knowledge of the distribution (2: Gaussian).
   S kappa = S(3 - kN);  ///< Secondary scaling; 3 - n matches the 4th moment of a Gaussian.
@@ -42,7 +42,7 @@ struct UnscentedParams {
 /// Ravn 2000; van der Merwe 2004 section 3.4.1): h^2 = 3 is optimal for a
 /// Gaussian prior (it matches the fourth moment). Default h = sqrt(3) (docs/filters.md).
 template <class S>
-struct CentralDifferenceParams {
+struct CentralDifferenceConfig {
   S h = lit<S>(1.7320508075688772935);  ///< Half-width of the central difference, h >= 1.
 };
 
@@ -255,7 +255,7 @@ Mat<S, kN, kM> gain(const Eigen::LLT<Mat<S, kM, kM>>& llt_S, const Mat<S, kN, kM
 /// root form leaves X_0 out of the QR and adds it by a rank-1 update.
 template <class Scalar, int kN>
 struct UnscentedPoints {
-  using Params = UnscentedParams<Scalar, kN>;
+  using Params = UnscentedConfig<Scalar, kN>;
   static constexpr int kCount = kSigmaPointCount<kN>;
   using State = Vec<Scalar, kN>;
   using Cov = Mat<Scalar, kN, kN>;
@@ -356,7 +356,7 @@ struct UnscentedPoints {
 /// negative, so the square-root form needs no rank-1 update.
 template <class Scalar, int kN>
 struct CentralDifferencePoints {
-  using Params = CentralDifferenceParams<Scalar>;
+  using Params = CentralDifferenceConfig<Scalar>;
   static constexpr int kCount = kSigmaPointCount<kN>;
   using State = Vec<Scalar, kN>;
   using Cov = Mat<Scalar, kN, kN>;

@@ -23,7 +23,7 @@ namespace kestrel {
 
 /// What configure_measurement_noise() takes: the adaptive noise's rule.
 template <class Scalar>
-struct MeasurementNoiseParams {
+struct MeasurementNoiseConfig {
   /// alpha, the weight of each plot's NIS excess in lambda, in [0, 1]; 0: off.
   Scalar gain{};
   /// lambda's upper bound, >= 1 (1: off); R up to this factor.
@@ -39,7 +39,7 @@ struct NominalMeasurementNoise {
   /// kOk for a gain of 0 (nothing asked of it); kOutOfRange for any other
   /// gain (kNonFinite for a NaN or Inf): this tracker was built without the adaptive noise, so it cannot
   /// honour it (build it with AdaptiveMeasurementNoise).
-  static Status check(const MeasurementNoiseParams<Scalar>& p) {
+  static Status check(const MeasurementNoiseConfig<Scalar>& p) {
     if (!ScalarTraits<Scalar>::is_finite(p.gain)) return Status::kNonFinite;
     return p.gain > Scalar(0) || p.gain < Scalar(0) ? Status::kOutOfRange : Status::kOk;
   }
@@ -59,7 +59,7 @@ class AdaptiveMeasurementNoise {
 
   /// kOk; kNonFinite (a parameter not finite); kOutOfRange (gain outside
   /// [0, 1], max_scale below 1).
-  static Status check(const MeasurementNoiseParams<Scalar>& p) {
+  static Status check(const MeasurementNoiseConfig<Scalar>& p) {
     using T = ScalarTraits<Scalar>;
     if (!T::is_finite(p.gain) || !T::is_finite(p.max_scale)) return Status::kNonFinite;
     if (p.gain < Scalar(0) || p.gain > Scalar(1) || p.max_scale < Scalar(1)) return Status::kOutOfRange;
@@ -68,7 +68,7 @@ class AdaptiveMeasurementNoise {
 
   /// Takes p (after check(p)) with the chi-square gate's d2 as the NIS cap;
   /// a cap of 0 (the robust gate off) leaves the rule off.
-  void configure(const MeasurementNoiseParams<Scalar>& p, Scalar nis_cap) { rule_ = {p.gain, p.max_scale, nis_cap}; }
+  void configure(const MeasurementNoiseConfig<Scalar>& p, Scalar nis_cap) { rule_ = {p.gain, p.max_scale, nis_cap}; }
 
   /// true when the rule acts (gain in (0, 1], max_scale > 1, the robust gate on).
   bool enabled() const { return rule_.enabled(); }

@@ -37,28 +37,29 @@ using CaPolarRadarRangeRate = PolarRadarRangeRate<CaMotion<Scalar>>;
 template <class Scalar>
 using EkfCaRr = Ekf<CaMotion<Scalar>, CaPolarRadarRangeRate<Scalar>>;
 
-/// The real-valued parameters in the tracker's scalar (see RadarTrackerScalars).
+/// The range-rate radar tracker's configuration: the real-valued fields of
+/// RadarRangeRateTrackerParams in the tracker's scalar (as RadarTrackerConfig).
 template <class Scalar>
-struct RadarRangeRateTrackerScalars {
-  RadarTrackerScalars<Scalar> radar;  ///< As for the range-bearing tracker.
+struct RadarRangeRateTrackerConfig {
+  RadarTrackerConfig<Scalar> radar;  ///< As for the range-bearing tracker.
   Scalar sigma_range_rate_mps;        ///< srr, m/s.
   Scalar max_range_rate_mps;          ///< Largest valid |range rate|, m/s.
 };
 
 template <class Scalar>
-constexpr RadarRangeRateTrackerScalars<Scalar> radar_range_rate_tracker_scalars(const RadarRangeRateTrackerParams& p) {
+constexpr RadarRangeRateTrackerConfig<Scalar> radar_range_rate_tracker_config(const RadarRangeRateTrackerParams& p) {
   using T = ScalarTraits<Scalar>;
-  return RadarRangeRateTrackerScalars<Scalar>{radar_tracker_scalars<Scalar>(p.radar),
-                                              T::from_double(p.sigma_range_rate_mps),
-                                              T::from_double(p.max_range_rate_mps)};
+  return RadarRangeRateTrackerConfig<Scalar>{radar_tracker_config<Scalar>(p.radar),
+                                             T::from_double(p.sigma_range_rate_mps),
+                                             T::from_double(p.max_range_rate_mps)};
 }
 
-/// Tracker-level configuration: radar_tracker_config() with the range-rate
+/// The generic Tracker's TrackerConfig: that of the radar tracker with the range-rate
 /// channel's box [-max_range_rate_mps, max_range_rate_mps].
 template <class Scalar>
-TrackerConfig<Scalar, 3> radar_range_rate_tracker_config(const RadarRangeRateTrackerParams& p,
-                                                         const RadarRangeRateTrackerScalars<Scalar>& s) {
-  const TrackerConfig<Scalar, 2> rb = radar_tracker_config<Scalar>(p.radar, s.radar);
+TrackerConfig<Scalar, 3> tracker_config_of(const RadarRangeRateTrackerParams& p,
+                                           const RadarRangeRateTrackerConfig<Scalar>& s) {
+  const TrackerConfig<Scalar, 2> rb = tracker_config_of<Scalar>(p.radar, s.radar);
   TrackerConfig<Scalar, 3> c;
   c.gate_confirmed = rb.gate_confirmed;
   c.gate_tentative = rb.gate_tentative;
@@ -81,7 +82,7 @@ TrackerConfig<Scalar, 3> radar_range_rate_tracker_config(const RadarRangeRateTra
 /// ones from s (no double arithmetic: the form a fixed-point board uses).
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
 RadarTracker<EkfCaRr<Scalar>, kMaxTracks, kMaxPlots> make_radar_range_rate_tracker(
-    const RadarRangeRateTrackerParams& p, const RadarRangeRateTrackerScalars<Scalar>& s) {
+    const RadarRangeRateTrackerParams& p, const RadarRangeRateTrackerConfig<Scalar>& s) {
   CaMotion<Scalar> motion;
   motion.qj = s.radar.qj;
   CaPolarRadarRangeRate<Scalar> radar;
@@ -91,14 +92,14 @@ RadarTracker<EkfCaRr<Scalar>, kMaxTracks, kMaxPlots> make_radar_range_rate_track
   TwoPointInitiator<CaMotion<Scalar>, CaPolarRadarRangeRate<Scalar>> init{radar, s.radar.max_speed_mps,
                                                                           s.radar.init_accel_sigma_mps2};
   return RadarTracker<EkfCaRr<Scalar>, kMaxTracks, kMaxPlots>(EkfCaRr<Scalar>(motion, radar), init,
-                                                              radar_range_rate_tracker_config<Scalar>(p, s));
+                                                              tracker_config_of<Scalar>(p, s));
 }
 
 /// The same with the parameters converted at run time.
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots>
 RadarTracker<EkfCaRr<Scalar>, kMaxTracks, kMaxPlots> make_radar_range_rate_tracker(
     const RadarRangeRateTrackerParams& p) {
-  return make_radar_range_rate_tracker<Scalar, kMaxTracks, kMaxPlots>(p, radar_range_rate_tracker_scalars<Scalar>(p));
+  return make_radar_range_rate_tracker<Scalar, kMaxTracks, kMaxPlots>(p, radar_range_rate_tracker_config<Scalar>(p));
 }
 
 }  // namespace kestrel

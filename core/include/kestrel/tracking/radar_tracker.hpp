@@ -99,17 +99,18 @@ using AdaptiveRadarTracker =
 /// p's adaptive noise rule (robust_noise_gain, robust_noise_max_scale) in
 /// the tracker's scalar, for Tracker::configure_measurement_noise().
 template <class Scalar>
-constexpr MeasurementNoiseParams<Scalar> radar_measurement_noise(const RadarTrackerParams& p) {
+constexpr MeasurementNoiseConfig<Scalar> radar_measurement_noise(const RadarTrackerParams& p) {
   using T = ScalarTraits<Scalar>;
   return {T::from_double(p.robust_noise_gain), T::from_double(p.robust_noise_max_scale)};
 }
 
-/// The real-valued parameters in the tracker's scalar. For a fixed-point
-/// board, build them in a constant expression,
-///   constexpr auto kScalars = radar_tracker_scalars<Q31_32>(RadarTrackerParams{});
+/// The radar tracker's configuration: the real-valued fields of
+/// RadarTrackerParams in the tracker's scalar. For a fixed-point board,
+/// build it in a constant expression,
+///   constexpr auto kConfig = radar_tracker_config<Q31_32>(RadarTrackerParams{});
 /// so the image converts nothing from double at run time.
 template <class Scalar>
-struct RadarTrackerScalars {
+struct RadarTrackerConfig {
   Scalar sigma_range_m;             ///< sr, m.
   Scalar sigma_bearing_rad;         ///< sb, rad.
   Scalar qj;                        ///< White-jerk PSD, m^2/s^5.
@@ -121,18 +122,19 @@ struct RadarTrackerScalars {
 };
 
 template <class Scalar>
-constexpr RadarTrackerScalars<Scalar> radar_tracker_scalars(const RadarTrackerParams& p) {
+constexpr RadarTrackerConfig<Scalar> radar_tracker_config(const RadarTrackerParams& p) {
   using T = ScalarTraits<Scalar>;
-  return RadarTrackerScalars<Scalar>{T::from_double(p.sigma_range_m), T::from_double(p.sigma_bearing_rad),
-                                     T::from_double(p.qj), T::from_double(p.max_speed_mps),
-                                     T::from_double(p.init_accel_sigma_mps2), T::from_double(p.max_range_m),
-                                     T::from_double(p.max_position_variance_m2),
-                                     T::from_double(p.robust_gate_factor)};
+  return RadarTrackerConfig<Scalar>{T::from_double(p.sigma_range_m), T::from_double(p.sigma_bearing_rad),
+                                    T::from_double(p.qj), T::from_double(p.max_speed_mps),
+                                    T::from_double(p.init_accel_sigma_mps2), T::from_double(p.max_range_m),
+                                    T::from_double(p.max_position_variance_m2),
+                                    T::from_double(p.robust_gate_factor)};
 }
 
-/// Tracker-level configuration: the integer fields of p, the real ones from s.
+/// The generic Tracker's TrackerConfig for the radar: the integer fields of
+/// p, the real ones from s.
 template <class Scalar>
-TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const RadarTrackerScalars<Scalar>& s) {
+TrackerConfig<Scalar, 2> tracker_config_of(const RadarTrackerParams& p, const RadarTrackerConfig<Scalar>& s) {
   using T = ScalarTraits<Scalar>;
   TrackerConfig<Scalar, 2> c;
   c.gate_confirmed = p.gate;
@@ -150,10 +152,10 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p, const
   return c;
 }
 
-/// Tracker-level configuration from the parameters.
+/// The generic Tracker's TrackerConfig from the parameters.
 template <class Scalar>
-TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
-  return radar_tracker_config<Scalar>(p, radar_tracker_scalars<Scalar>(p));
+TrackerConfig<Scalar, 2> tracker_config_of(const RadarTrackerParams& p) {
+  return tracker_config_of<Scalar>(p, radar_tracker_config<Scalar>(p));
 }
 
 /// The EKF-CA radar tracker: the integer fields of p, the real ones from s
@@ -162,7 +164,7 @@ TrackerConfig<Scalar, 2> radar_tracker_config(const RadarTrackerParams& p) {
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots, class Filter = EkfCa<Scalar>>
   requires std::derived_from<Filter, EkfCa<Scalar>>
 RadarTracker<Filter, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p,
-                                                               const RadarTrackerScalars<Scalar>& s) {
+                                                               const RadarTrackerConfig<Scalar>& s) {
   CaMotion<Scalar> motion;
   motion.qj = s.qj;
   CaPolarRadar<Scalar> radar;
@@ -170,16 +172,16 @@ RadarTracker<Filter, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTracke
   radar.sigma_bearing_rad = s.sigma_bearing_rad;
   TwoPointInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{radar, s.max_speed_mps,
                                                                  s.init_accel_sigma_mps2};
-  return RadarTracker<Filter, kMaxTracks, kMaxPlots>(Filter(motion, radar), init, radar_tracker_config<Scalar>(p, s));
+  return RadarTracker<Filter, kMaxTracks, kMaxPlots>(Filter(motion, radar), init, tracker_config_of<Scalar>(p, s));
 }
 
 /// The EKF-CA radar tracker with the given parameters (converted at run
 /// time: exact and host-independent for fixed point too, but a board
-/// should pass constexpr RadarTrackerScalars instead).
+/// should pass constexpr RadarTrackerConfig instead).
 template <class Scalar, std::size_t kMaxTracks, std::size_t kMaxPlots, class Filter = EkfCa<Scalar>>
   requires std::derived_from<Filter, EkfCa<Scalar>>
 RadarTracker<Filter, kMaxTracks, kMaxPlots> make_radar_tracker(const RadarTrackerParams& p) {
-  return make_radar_tracker<Scalar, kMaxTracks, kMaxPlots, Filter>(p, radar_tracker_scalars<Scalar>(p));
+  return make_radar_tracker<Scalar, kMaxTracks, kMaxPlots, Filter>(p, radar_tracker_config<Scalar>(p));
 }
 
 }  // namespace kestrel

@@ -32,7 +32,7 @@
 
 namespace kestrel {
 
-/// Configuration of an SonarTracker, in its scalar.
+/// Configuration of a SonarTracker, in its scalar.
 template <class Scalar, int kMaxBeacons>
 struct SonarTrackerConfig {
   ConstantVelocity3DSoundSpeed<Scalar> motion{};   ///< Process noise (accel sigma, c random walk).

@@ -354,7 +354,7 @@ class Tracker {
   ///         adaptive noise, NominalMeasurementNoise, or without the robust
   ///         gate; a gain outside [0, 1] or a max scale below 1); kNonFinite.
   ///         The tracker is unchanged on any refusal.
-  [[nodiscard]] Status configure_measurement_noise(const MeasurementNoiseParams<Scalar>& p) {
+  [[nodiscard]] Status configure_measurement_noise(const MeasurementNoiseConfig<Scalar>& p) {
     KESTREL_TRY(MeasurementNoiseT::check(p));
     if constexpr (MeasurementNoiseT::kAdapts) {
       // Without the robust gate the rule would not act: refused, not ignored.

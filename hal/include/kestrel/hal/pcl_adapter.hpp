@@ -25,7 +25,7 @@
 namespace kestrel::hal {
 
 /// The PCL front end's constants.
-struct PclAdapterConfig {
+struct PclAdapterParams {
   double carrier_hz = 701.0e6;  ///< Illuminator carrier frequency, Hz (lambda = c0 / f).
 };
 
@@ -135,7 +135,7 @@ class PclAdapter {
   using Scalar = typename Tracker::Scalar;
   using Scan = typename Tracker::Scan;
 
-  PclAdapter(const Tracker* tracker, const PclAdapterConfig& config)
+  PclAdapter(const Tracker* tracker, const PclAdapterParams& config)
       : tracker_(tracker), lambda_m_(ScalarTraits<Scalar>::from_double(kSpeedOfLightMps / config.carrier_hz)) {}
 
   /// @return see to_pcl_scan.

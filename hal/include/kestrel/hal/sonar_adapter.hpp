@@ -6,7 +6,7 @@
 // here. This is the one place where sonar units change.
 //
 // The beacon table and the seabed depth are not on the wire: they are the
-// installation's geometry, given once in a SonarConfig and turned into the
+// installation's geometry, given once in a SonarAdapterParams and turned into the
 // tracker's configuration by sonar_tracker_params().
 #pragma once
 
@@ -36,7 +36,7 @@ struct SonarBeacon {
 
 /// Installation geometry of a sonar front end: the beacon table (indexed by
 /// SonarArrival::beacon_id), the seabed depth and the arrival-time noise.
-struct SonarConfig {
+struct SonarAdapterParams {
   SonarBeacon beacons[kMaxSonarBeacons] = {
       {0, 0, 0}, {2000000, 0, 0}, {0, 2000000, 0}, {2000000, 2000000, 0}};  ///< UW-003's beacons (docs/scenarios.md).
   std::uint8_t beacon_count = 4;        ///< Beacons in use.
@@ -46,8 +46,8 @@ struct SonarConfig {
 
 /// The tracker parameters with the installation's geometry filled in
 /// (everything else keeps the values already in `base`).
-inline SonarTrackerParams sonar_tracker_params(const SonarConfig& cfg,
-                                                    SonarTrackerParams base = SonarTrackerParams{}) {
+inline SonarTrackerParams sonar_tracker_params(const SonarAdapterParams& cfg,
+                                               SonarTrackerParams base = SonarTrackerParams{}) {
   const std::size_t n = cfg.beacon_count < kMaxSonarBeacons ? cfg.beacon_count : kMaxSonarBeacons;
   base.beacon_count = static_cast<std::uint8_t>(n);
   for (std::size_t i = 0; i < kMaxSonarBeacons; ++i) {

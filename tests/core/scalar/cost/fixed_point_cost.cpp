@@ -58,7 +58,7 @@ template <class S, EkfUpdateForm kForm>
 void count_filter(const char* scalar, const char* form) {
   using T = ScalarTraits<S>;
   using F = Ekf<CaMotion<S>, CaPolarRadar<S>, kForm>;
-  static constexpr RadarTrackerScalars<S> kS = radar_tracker_scalars<S>(test::tuned_params());
+  static constexpr RadarTrackerConfig<S> kS = radar_tracker_config<S>(test::tuned_params());
   CaMotion<S> motion;
   motion.qj = kS.qj;
   CaPolarRadar<S> radar;
@@ -85,13 +85,13 @@ void count_tracker(const char* scalar, const char* form) {
   using F = Ekf<CaMotion<S>, CaPolarRadar<S>, kForm>;
   using Tr = RadarTracker<F, 4, 4>;
   static constexpr RadarTrackerParams kP = test::tuned_params();
-  static constexpr RadarTrackerScalars<S> kS = radar_tracker_scalars<S>(kP);
+  static constexpr RadarTrackerConfig<S> kS = radar_tracker_config<S>(kP);
   CaMotion<S> motion;
   motion.qj = kS.qj;
   CaPolarRadar<S> radar;
   radar.sigma_range_m = kS.sigma_range_m;
   radar.sigma_bearing_rad = kS.sigma_bearing_rad;
-  Tr tracker(F(motion, radar), {radar, kS.max_speed_mps, kS.init_accel_sigma_mps2}, radar_tracker_config<S>(kP, kS));
+  Tr tracker(F(motion, radar), {radar, kS.max_speed_mps, kS.init_accel_sigma_mps2}, tracker_config_of<S>(kP, kS));
   const auto scans = s1_scans<S>();
   CALLGRIND_TOGGLE_COLLECT;
   for (const auto& scan : scans) {

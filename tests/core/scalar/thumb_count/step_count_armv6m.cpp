@@ -29,7 +29,7 @@ using Q = kestrel::Q31_32;
 using BoardTracker = kestrel::RadarTracker<kestrel::EkfCa<Q>, 8, 32>;
 
 constexpr kestrel::RadarTrackerParams kParams{};
-constexpr kestrel::RadarTrackerScalars<Q> kScalars = kestrel::radar_tracker_scalars<Q>(kParams);
+constexpr kestrel::RadarTrackerConfig<Q> kConfig = kestrel::radar_tracker_config<Q>(kParams);
 
 }  // namespace
 
@@ -142,10 +142,10 @@ bool run_full_frame(BoardTracker& tracker) {
 }  // namespace
 
 extern "C" [[noreturn]] void _start() {
-  BoardTracker normal = kestrel::make_radar_tracker<Q, 8, 32>(kParams, kScalars);
+  BoardTracker normal = kestrel::make_radar_tracker<Q, 8, 32>(kParams, kConfig);
   const bool ok_normal = run_normal(normal);
   write_text(ok_normal ? "normal: steps 10..29 measured\n" : "normal: fewer than 10 normal steps\n");
-  BoardTracker crowd = kestrel::make_radar_tracker<Q, 8, 32>(kParams, kScalars);
+  BoardTracker crowd = kestrel::make_radar_tracker<Q, 8, 32>(kParams, kConfig);
   const bool ok_full = run_full_frame(crowd);
   write_text(ok_full ? "full frame: 1 step measured\n" : "full frame: a step did not take the full-frame path\n");
   const bool clean = kestrel::fixed_point_overflow_count() == 0;

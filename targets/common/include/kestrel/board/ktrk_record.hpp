@@ -1,46 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // KTRK v2: the binary track record every board's sink emits, so a consumer
 // reads the same bytes from a Cortex-M UART, a RISC-V Linux process or a
-// file (docs/architecture.md). One fixed-size record per track report, never
-// split, so a consumer can always resynchronise on the magic; the CRC-32
-// tells a damaged record from a real jump. Why binary, the older v1 and the
-// rounding choices: docs/porting.md, "KTRK records". Layout, all
-// little-endian (tools/ktrk_decode.py reads it):
-//
-//   off size field
-//    0  u32  magic 'K' 'T' 'R' 'K' (0x4B52544B)
-//    4  u8   version (2)
-//    5  u8   TrackStatus (1 tentative, 2 confirmed)
-//    6  u8   flags: bit 0 = associated in this frame
-//    7  u8   state layout code (StateLayout below)
-//    8  u32  track_id
-//   12  i64  t_us, frame time, microseconds
-//   20  i32  c[0..5]  state components, x 1000 in the layout's SI units
-//                     (mm, mm/s, mm/s^2); those past the count are 0
-//   44  u32  sigma_milli  sqrt of the sum of the variances the layout names,
-//                         x 1000 (mm)
-//   48  u16  age, frames
-//   50  u16  hits
-//   52  u16  misses (consecutive)
-//   54  i16  measurement_index (-1: none)
-//   56  u16  nis_centi  NIS x 100 of this frame's association
-//   58  u8   component count (0..6)
-//   59  u8   reserved, 0
-//   60  u32  CRC-32 (hal/crc32.hpp) of bytes 0..59
-//
-//   layout                  c[0..count-1]                        sigma of
-//   1 Cartesian 2-D CV      x_mm y_mm vx_mmps vy_mmps            x, y
-//   2 Cartesian 2-D CA      x_mm y_mm vx_mmps vy_mmps            x, y
-//                           ax_mmps2 ay_mmps2
-//   3 bistatic 1-D          rb_mm drb_mmps (Rb, dRb of PCL)      Rb
-//
-// The layout code comes from the filter's named state layout
-// (Motion::Layout) at compile time: a layout with no code here does not
-// compile (add a code and a row to tools/ktrk_decode.py). Scalars are
-// rounded half away from zero and saturated to the field in the tracker's
-// own precision (integer arithmetic only for a fixed-point tracker); a
-// saturated value is the field's end of its sign, and NaN is written as the
-// field's minimum (INT32_MIN, or the unsigned maximum for unsigned fields).
+// file: one fixed-size, CRC-checked 64-byte record per track report, its
+// state components chosen at compile time from the filter's state layout.
+// The layout, the codes and the rounding rules: docs/wire_format.md,
+// "Track records (KTRK v2)"; tools/ktrk_decode.py reads it.
 #pragma once
 
 #include <cmath>
