@@ -173,7 +173,7 @@ SCENARIO("The radar IMM is a tracking filter", "[imm]") {
   STATIC_REQUIRE(kestrel::RadarImm<double>::kModes == 3);
   STATIC_REQUIRE(kestrel::RadarImm<double>::kStateDim == 6);
   STATIC_REQUIRE(kestrel::RadarImm<double>::kCommonDim == 7);
-  CHECK(kestrel::RadarImm<double>::Params{}.valid());
+  CHECK(kestrel::RadarImm<double>::Config{}.valid());
 }
 
 SCENARIO("An IMM with one mode equals that mode's EKF", "[imm]") {
@@ -182,7 +182,7 @@ SCENARIO("An IMM with one mode equals that mode's EKF", "[imm]") {
   Ca<double> ca;
   ca.qj = 50.0;
   Mode ekf(ca, ca_radar<double>());
-  One imm(ca_radar<double>(), One::Params{}, ekf);
+  One imm(ca_radar<double>(), One::Config{}, ekf);
   REQUIRE(ekf.reset(initial_state<double>(), initial_cov<double>()) == Status::kOk);
   REQUIRE(imm.reset(initial_state<double>(), initial_cov<double>()) == Status::kOk);
   const auto plots = manoeuvre_plots(7);
@@ -297,7 +297,7 @@ SCENARIO("An IMM whose mode refuses the update refuses it whole", "[imm]") {
   h_cv.sigma_bearing_rad = kSigmaBearing;
   Ca<double> ca;
   ca.qj = 50.0;
-  Imm imm(ca_radar<double>(), Imm::Params{}, kestrel::ImmCvMode<double>(cv, h_cv),
+  Imm imm(ca_radar<double>(), Imm::Config{}, kestrel::ImmCvMode<double>(cv, h_cv),
           RefusingCaMode(ca, ca_radar<double>()));
   REQUIRE(imm.reset(initial_state<double>(), initial_cov<double>()) == Status::kOk);
   const auto plots = manoeuvre_plots(13);
@@ -360,8 +360,8 @@ double entry_tolerance() {
 TEMPLATE_TEST_CASE("Scenario: the switching matrix follows dt by mean sojourn times", "[imm][switching]", double,
                    float) {
   using S = TestType;
-  using Params = kestrel::ImmConfig<S, 3>;
-  Params params;
+  using Config = kestrel::ImmConfig<S, 3>;
+  Config params;
   params.switching = uneven_switching<S>();
   params.switching_period_s = S(0.5);
   REQUIRE(params.valid());
@@ -402,8 +402,8 @@ TEMPLATE_TEST_CASE("Scenario: the switching matrix follows dt by mean sojourn ti
 TEMPLATE_TEST_CASE("Scenario: the scaled switching matrix stays stochastic from 1 ms to 100 s", "[imm][switching]",
                    double, float) {
   using S = TestType;
-  using Params = kestrel::ImmConfig<S, 3>;
-  Params params;
+  using Config = kestrel::ImmConfig<S, 3>;
+  Config params;
   params.switching = uneven_switching<S>();
   params.switching_period_s = S(0.5);
   const double tol = 4 * entry_tolerance<S>();

@@ -90,11 +90,11 @@ class Crpf {
   using MeasCov = typename Measurement::NoiseCov;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
-  using Params = CrpfConfig<Scalar>;
+  using Config = CrpfConfig<Scalar>;
   using KickFactor = Mat<Scalar, kStateDim, kKickDim>;
 
   Crpf() : Crpf(Motion{}, Measurement{}) {}
-  Crpf(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+  Crpf(const Motion& motion, const Measurement& measurement, const Config& params = Config{})
       : motion_(motion), measurement_(measurement), params_(params), normal_(params.seed) {
     KESTREL_ASSERT(params.beta >= 1 && params.beta <= kMaxBeta);
     KESTREL_ASSERT(params.delta > Scalar(0));
@@ -325,7 +325,7 @@ class Crpf {
   const Measurement& measurement() const { return measurement_; }
   Motion& motion() { return motion_; }
   Measurement& measurement() { return measurement_; }
-  const Params& params() const { return params_; }
+  const Config& params() const { return params_; }
   /// Diagnostics of the last update attempt (innovation linearised, see above).
   const Diagnostics& diagnostics() const { return diag_; }
 
@@ -411,7 +411,7 @@ class Crpf {
 
   Motion motion_;
   Measurement measurement_;
-  Params params_;
+  Config params_;
   NormalGenerator<Scalar> normal_;
   static constexpr std::size_t kSize = static_cast<std::size_t>(kParticles);
   State xs_[2][kSize];   ///< Double-buffered cloud; xs_[cur_] is current.

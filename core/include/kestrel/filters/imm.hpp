@@ -183,7 +183,7 @@ class Imm {
   using CommonState = Vec<Scalar, kCommonDim>;
   using CommonCov = Mat<Scalar, kCommonDim, kCommonDim>;
   using Probabilities = Vec<Scalar, kModes>;
-  using Params = ImmConfig<Scalar, kModes>;
+  using Config = ImmConfig<Scalar, kModes>;
   using Innov = Innovation<Scalar, kMeasDim>;
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   using Modes = std::tuple<ModeFilters...>;
@@ -200,14 +200,14 @@ class Imm {
   static_assert(imm_detail::maps_every_component<Layout, kStateDim>(),
                 "every Output state component must be a common one (ImmCommonLayout)");
 
-  Imm() : Imm(OutputMeasurement{}, Params{}, ModeFilters{}...) {}
+  Imm() : Imm(OutputMeasurement{}, Config{}, ModeFilters{}...) {}
 
   /// @param h      the measurement model of the combined (output) estimate,
   ///               used by innovation() (the gate) only.
   /// @param params switching matrix, floor and pads; should be valid()
   ///               (predict() refuses with kOutOfRange where c_j is not > 0).
   /// @param modes  the mode filters with their model parameters.
-  Imm(const OutputMeasurement& h, const Params& params, const ModeFilters&... modes)
+  Imm(const OutputMeasurement& h, const Config& params, const ModeFilters&... modes)
       : modes_(modes...), output_(Output{}, h), params_(params) {
     mu_ = floored(params_.initial_probabilities);
     mixing_ = Mat<Scalar, kModes, kModes>::Identity();
@@ -338,7 +338,7 @@ class Imm {
   const Mode<j>& mode() const {
     return std::get<static_cast<std::size_t>(j)>(modes_);
   }
-  const Params& params() const { return params_; }
+  const Config& params() const { return params_; }
   const OutputMeasurement& measurement() const { return output_.measurement(); }
   /// Diagnostics of the last update attempt (the combined innovation).
   const Diagnostics& diagnostics() const { return diag_; }
@@ -493,7 +493,7 @@ class Imm {
 
   Modes modes_;
   Ekf<Output, OutputMeasurement> output_;  ///< Combined estimate on Output's state (x, P, gate).
-  Params params_;
+  Config params_;
   CommonState xc_;
   CommonCov Pc_;
   Probabilities mu_;

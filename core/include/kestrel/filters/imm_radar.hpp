@@ -64,7 +64,7 @@ RadarImm<S> make_radar_imm(const RadarImmParams& p) {
   CoordinatedTurn2D<S> ct;
   ct.sa = T::from_double(p.ct_sa_mps2);
   ct.sw = T::from_double(p.ct_sw_radps);
-  typename RadarImm<S>::Params ip;
+  typename RadarImm<S>::Config ip;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) ip.switching(i, j) = T::from_double(p.switching[i][j]);
     ip.initial_probabilities(i) = T::from_double(p.initial_probabilities[i]);

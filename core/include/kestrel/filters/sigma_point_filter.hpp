@@ -34,11 +34,11 @@ class SigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointSet
 
  public:
   using typename Base::Scalar, typename Base::State, typename Base::Cov, typename Base::MeasVec,
-      typename Base::MeasCov, typename Base::Innov, typename Base::Params;
+      typename Base::MeasCov, typename Base::Innov, typename Base::Config;
   using Base::kStateDim, Base::kMeasDim, Base::kAffinePredict;
 
   SigmaPointFilter() : SigmaPointFilter(Motion{}, Measurement{}) {}
-  SigmaPointFilter(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+  SigmaPointFilter(const Motion& motion, const Measurement& measurement, const Config& params = Config{})
       : Base(motion, measurement, params), P_(Cov::Identity()) {}
 
   /// Set the state and covariance.

@@ -36,7 +36,7 @@ class FilterParts {
   using Diagnostics = FusionDiagnostics<Scalar, kMeasDim>;
   /// The point set with its weights.
   using Weights = PointSet<Scalar, kStateDim>;
-  using Params = typename Weights::Params;
+  using Config = typename Weights::Config;
   /// Closed-form time update of an affine (block-diagonal) motion model
   /// (sigma_points.hpp); false for Dense<M> and nonlinear models.
   static constexpr bool kAffinePredict = kAffineTimeUpdate<Motion>;
@@ -46,13 +46,13 @@ class FilterParts {
   const Measurement& measurement() const { return measurement_; }
   Motion& motion() { return motion_; }
   Measurement& measurement() { return measurement_; }
-  const Params& params() const { return params_; }
+  const Config& params() const { return params_; }
   const Weights& weights() const { return w_; }
   /// Diagnostics of the last update attempt.
   const Diagnostics& diagnostics() const { return diag_; }
 
  protected:
-  FilterParts(const Motion& motion, const Measurement& measurement, const Params& params)
+  FilterParts(const Motion& motion, const Measurement& measurement, const Config& params)
       : motion_(motion), measurement_(measurement), params_(params), w_(Weights::from(params)), x_(State::Zero()) {
     diag_ = Diagnostics{};
   }
@@ -65,7 +65,7 @@ class FilterParts {
 
   Motion motion_;
   Measurement measurement_;
-  Params params_;
+  Config params_;
   Weights w_;
   State x_;
   Diagnostics diag_;

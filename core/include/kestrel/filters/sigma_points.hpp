@@ -255,7 +255,7 @@ Mat<S, kN, kM> gain(const Eigen::LLT<Mat<S, kM, kM>>& llt_S, const Mat<S, kN, kM
 /// root form leaves X_0 out of the QR and adds it by a rank-1 update.
 template <class Scalar, int kN>
 struct UnscentedPoints {
-  using Params = UnscentedConfig<Scalar, kN>;
+  using Config = UnscentedConfig<Scalar, kN>;
   static constexpr int kCount = kSigmaPointCount<kN>;
   using State = Vec<Scalar, kN>;
   using Cov = Mat<Scalar, kN, kN>;
@@ -267,7 +267,7 @@ struct UnscentedPoints {
   Scalar wi{};       ///< Weight of X_1 .. X_2n (positive).
   Scalar sqrt_wi{};  ///< sqrt(W_i), the column scale of the SR-UKF compound matrix.
 
-  static UnscentedPoints from(const Params& p) {
+  static UnscentedPoints from(const Config& p) {
     using T = ScalarTraits<Scalar>;
     const Scalar n = Scalar(kN);
     const Scalar n_lambda = p.alpha * p.alpha * (n + p.kappa);  // n + lambda
@@ -356,7 +356,7 @@ struct UnscentedPoints {
 /// negative, so the square-root form needs no rank-1 update.
 template <class Scalar, int kN>
 struct CentralDifferencePoints {
-  using Params = CentralDifferenceConfig<Scalar>;
+  using Config = CentralDifferenceConfig<Scalar>;
   static constexpr int kCount = kSigmaPointCount<kN>;
   using State = Vec<Scalar, kN>;
   using Cov = Mat<Scalar, kN, kN>;
@@ -370,7 +370,7 @@ struct CentralDifferencePoints {
   Scalar sqrt_wc1{};  ///< sqrt(Wc1) = 1 / (2h).
   Scalar sqrt_wc2{};  ///< sqrt(Wc2) = sqrt(h^2 - 1) / (2 h^2).
 
-  static CentralDifferencePoints from(const Params& p) {
+  static CentralDifferencePoints from(const Config& p) {
     using T = ScalarTraits<Scalar>;
     KESTREL_ASSERT(p.h >= Scalar(1));  // programmer error: Wc2 must be >= 0
     const Scalar h2 = p.h * p.h;

@@ -36,11 +36,11 @@ class SrSigmaPointFilter : public sigma::FilterParts<Motion, Measurement, PointS
 
  public:
   using typename Base::Scalar, typename Base::State, typename Base::Cov, typename Base::MeasVec,
-      typename Base::MeasCov, typename Base::Innov, typename Base::Params;
+      typename Base::MeasCov, typename Base::Innov, typename Base::Config;
   using Base::kStateDim, Base::kMeasDim, Base::kAffinePredict;
 
   SrSigmaPointFilter() : SrSigmaPointFilter(Motion{}, Measurement{}) {}
-  SrSigmaPointFilter(const Motion& motion, const Measurement& measurement, const Params& params = Params{})
+  SrSigmaPointFilter(const Motion& motion, const Measurement& measurement, const Config& params = Config{})
       : Base(motion, measurement, params), Sx_(Cov::Identity()), P_(Cov::Identity()) {}
 
   /// Set the state and covariance (factorised once here).
