@@ -4,9 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <utility>
-
-#include "pipeline/worker_pool.hpp"
 
 #include <Eigen/Dense>
 
@@ -161,23 +158,11 @@ SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint
 
 SonarMonteCarloResult run_sonar_monte_carlo(const SonarScenarioParams& scenario, const SonarTrackerParams& params,
                                             const SonarMonteCarloParams& config) {
-  SonarMonteCarloResult result;
-  result.runs.resize(config.runs);
-  for_each_index(
-      config.runs, config.jobs,
-      [&](std::size_t i) {
-        const std::uint64_t seed = config.base_seed + i;
-        SonarScenarioRun run = generate_sonar(scenario, seed);
-        SonarRunOutput out = run_sonar(run, params, config.budget_ns);
-        result.runs[i] = score_sonar_run(run, out);
-        result.runs[i].seed = seed;
-        if (i == 0) {  // only the worker that takes i == 0 writes these
-          result.first_run = std::move(run);
-          result.first_output = std::move(out);
-        }
-      },
-      Progress{scenario.name.c_str()});
-  return result;
+  return run_seeded<SonarMonteCarloResult>(
+      config.runs, config.base_seed, config.jobs, scenario.name.c_str(),
+      [&](std::uint64_t seed) { return generate_sonar(scenario, seed); },
+      [&](const SonarScenarioRun& run) { return run_sonar(run, params, config.budget_ns); },
+      [](const SonarScenarioRun& run, const SonarRunOutput& out) { return score_sonar_run(run, out); });
 }
 
 }  // namespace kestrel::sim

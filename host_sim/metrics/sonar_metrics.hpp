@@ -21,6 +21,7 @@
 
 #include "metrics/monte_carlo_stats.hpp"
 #include "montecarlo/sonar_run.hpp"
+#include "pipeline/seeded_runs.hpp"
 #include "scenarios/uw003.hpp"
 #include "timing/step_timing.hpp"
 
@@ -76,11 +77,7 @@ struct SonarMonteCarloParams {
   std::uint64_t budget_ns = 1'000'000;
 };
 
-struct SonarMonteCarloResult {
-  std::vector<SonarRunMetrics> runs;  ///< In seed order.
-  SonarScenarioRun first_run;         ///< Run 0's truth and frames (for the CSVs and plots).
-  SonarRunOutput first_output;        ///< Run 0's tracker output.
-};
+using SonarMonteCarloResult = SeededRuns<SonarRunMetrics, SonarScenarioRun, SonarRunOutput>;
 
 /// Runs are independent and each writes its own slot: the figures do not
 /// depend on `jobs` (step times do).

@@ -12,6 +12,7 @@
 #include "kestrel/tracking/pcl_tracker.hpp"
 #include "metrics/pcl_metrics.hpp"
 #include "montecarlo/pcl_run.hpp"
+#include "pipeline/seeded_runs.hpp"
 #include "scenarios/pcl002.hpp"
 
 namespace kestrel::sim {
@@ -25,11 +26,7 @@ struct PclMonteCarloParams {
   PclTolerance tolerance;
 };
 
-struct PclMonteCarloResult {
-  std::vector<PclRunMetrics> runs;  ///< In seed order.
-  PclScenarioRun first_run;         ///< Run 0's truth and frames (for the CSVs and the plot).
-  PclRunOutput first_output;        ///< Run 0's tracker output.
-};
+using PclMonteCarloResult = SeededRuns<PclRunMetrics, PclScenarioRun, PclRunOutput>;
 
 PclMonteCarloResult run_pcl_monte_carlo(const PclScenarioParams& scenario, const PclTrackerParams& params,
                                         const PclMonteCarloParams& config);
