@@ -421,6 +421,14 @@ class Tracker {
   /// initialised ones if config.report_tentative).
   std::span<const Report> reports() const { return {reports_, report_count_}; }
   const StepStats& last_step() const { return stats_; }
+
+  /// A track of fewer plots than this takes no plot beyond the chi-square
+  /// gate under the robust gate: its S is still mostly its start's, wide,
+  /// so such a plot lies far off and is most likely not the target's.
+  /// Four: the two of a two-point start and two plain updates. Why:
+  /// docs/robustness.md, "A young track".
+  static constexpr std::uint16_t kRobustGateMinHits = 4;
+
   const Table& tracks() const { return table_; }
   const Config& config() const { return config_; }
   const Initiator& initiator() const { return initiator_; }
@@ -579,6 +587,9 @@ class Tracker {
     if (c.count_ > 0) associator_.associate(c);
   }
 
+  /// Too few plots for the robust gate (kRobustGateMinHits).
+  static bool young(const TrackT& tr) { return tr.hits < kRobustGateMinHits; }
+
   /// Update track `slot` with measurement j; record the association.
   /// `in`: its innovation before the update (the report and the manager read it).
   /// `robust`: beyond its inner gate the update takes the shrunk innovation.
@@ -596,6 +607,7 @@ class Tracker {
       }
     }
     const bool clipped = robust.clips(in);
+    if (clipped && young(tr)) return;  // a miss: see young()
     Status s;
     if (clipped) {
       s = tr.filter.update(robust.shrink(scan.z[j], in));
@@ -652,9 +664,11 @@ class Tracker {
       const Innov fused = tr.filter.innovation_scaled(scan.z[j], scale);
       fused_d2 = fused.d2;
       clipped = robust.clips(fused);
+      if (clipped && young(tr)) return;  // a miss: see young()
       s = tr.filter.update_scaled(clipped ? robust.shrink(scan.z[j], fused) : scan.z[j], scale);
     } else {
       clipped = robust.clips(in);
+      if (clipped && young(tr)) return;  // a miss: see young()
       s = clipped ? tr.filter.update(robust.shrink(scan.z[j], in)) : update_of(tr.filter, scan, j);
     }
     if (s != Status::kOk) {
