@@ -25,8 +25,10 @@
 // board's text budget).
 #if defined(__thumb__) && !defined(__thumb2__)
 #define KESTREL_FIXED_MUL_OUTLINE [[gnu::noinline]]
+#define KESTREL_FIXED_MUL_PART [[gnu::always_inline]]
 #else
 #define KESTREL_FIXED_MUL_OUTLINE
+#define KESTREL_FIXED_MUL_PART
 #endif
 
 namespace kestrel {
@@ -71,7 +73,7 @@ constexpr std::uint64_t lo32(std::uint64_t v) { return v & 0xFFFFFFFFu; }
 /// what a core without a long multiply (ARMv6-M's MULS gives the low 32
 /// bits only) does, inline, where the compiler would call the general
 /// 64 x 64-bit __aeabi_lmul for each piece.
-constexpr std::uint64_t mul_32x32_limbs(std::uint32_t a, std::uint32_t b) {
+KESTREL_FIXED_MUL_PART constexpr std::uint64_t mul_32x32_limbs(std::uint32_t a, std::uint32_t b) {
   const std::uint32_t a0 = a & 0xFFFFu;
   const std::uint32_t a1 = a >> 16;
   const std::uint32_t b0 = b & 0xFFFFu;
@@ -90,7 +92,7 @@ constexpr std::uint64_t mul_32x32_limbs(std::uint32_t a, std::uint32_t b) {
 
 /// Exact 32 x 32 -> 64-bit product: mul_32x32_limbs() on Thumb-1 (no
 /// long multiply), the native product elsewhere. The same value either way.
-constexpr std::uint64_t mul_32x32(std::uint64_t a, std::uint64_t b) {
+KESTREL_FIXED_MUL_PART constexpr std::uint64_t mul_32x32(std::uint64_t a, std::uint64_t b) {
 #if defined(__thumb__) && !defined(__thumb2__)
   return mul_32x32_limbs(static_cast<std::uint32_t>(a), static_cast<std::uint32_t>(b));
 #else
@@ -99,11 +101,20 @@ constexpr std::uint64_t mul_32x32(std::uint64_t a, std::uint64_t b) {
 }
 
 /// Exact 64 x 64 -> 128-bit product from four 32 x 32 -> 64-bit products.
-constexpr U128 mul_wide(std::uint64_t a, std::uint64_t b) {
+KESTREL_FIXED_MUL_PART constexpr U128 mul_wide(std::uint64_t a, std::uint64_t b) {
   const std::uint64_t a0 = lo32(a);
   const std::uint64_t a1 = a >> 32;
   const std::uint64_t b0 = lo32(b);
   const std::uint64_t b1 = b >> 32;
+  // An operand below 2^32 (a value below 1) needs two pieces, not four:
+  // without a long multiply (Thumb-1) each piece is four MULS and carries.
+  if (a1 == 0 || b1 == 0) {
+    const std::uint64_t s = a1 == 0 ? a0 : b0;  // the short operand
+    const std::uint64_t l = a1 == 0 ? b : a;
+    const std::uint64_t q0 = mul_32x32(s, lo32(l));
+    const std::uint64_t q1 = mul_32x32(s, l >> 32) + (q0 >> 32);  // < 2^64: no carry out
+    return U128{q1 >> 32, (q1 << 32) | lo32(q0)};
+  }
   const std::uint64_t p00 = mul_32x32(a0, b0);
   const std::uint64_t p01 = mul_32x32(a0, b1);
   const std::uint64_t p10 = mul_32x32(a1, b0);
@@ -148,6 +159,20 @@ constexpr U128 round_shift(U128 v, int s) {
   return q;
 }
 
+/// round_shift() by a shift known at compile time (the product's): on a
+/// 32-bit core the 128-bit shifts become word moves instead of calls.
+template <int s>
+KESTREL_FIXED_MUL_PART constexpr U128 round_shift_by(U128 v) {
+  static_assert(s > 0 && s < 64);
+  const std::uint64_t q_hi = v.hi >> s;
+  const std::uint64_t q_lo = (v.lo >> s) | (v.hi << (64 - s));
+  const std::uint64_t rem = v.lo & ((std::uint64_t{1} << s) - 1u);
+  constexpr std::uint64_t kHalf = std::uint64_t{1} << (s - 1);
+  const bool up = rem > kHalf || (rem == kHalf && (q_lo & 1u) != 0);
+  if (!up) return U128{q_hi, q_lo};
+  return U128{q_hi + (q_lo + 1u == 0 ? 1u : 0u), q_lo + 1u};
+}
+
 /// |v| as uint64 (exact for INT64_MIN too).
 constexpr std::uint64_t magnitude(std::int64_t v) {
   return v < 0 ? 0u - static_cast<std::uint64_t>(v) : static_cast<std::uint64_t>(v);
@@ -169,24 +194,36 @@ struct DivResult {
   std::uint64_t r;
 };
 
+/// Bit length of v > 0 (1..64).
+constexpr int bit_length(std::uint64_t v) { return 64 - std::countl_zero(v); }
+
+/// Bit length of v (0 for v == 0).
+constexpr int bit_length(U128 v) {
+  if (v.hi != 0) return 64 + bit_length(v.hi);
+  return v.lo != 0 ? bit_length(v.lo) : 0;
+}
+
 /// floor(n / d) and n mod d for d != 0 and n.hi < d (so the quotient fits in
-/// 64 bits): restoring shift-subtract, exactly 64 iterations whatever the
-/// operands (constant time, no hardware divider needed).
+/// 64 bits): restoring shift-subtract, one quotient bit per iteration (no
+/// hardware divider needed). Leading quotient bits that must be zero (n
+/// has too few bits for them) are skipped: at most 64 iterations, fewer
+/// the smaller the quotient.
 constexpr DivResult udiv(U128 n, std::uint64_t d) {
-  std::uint64_t r = n.hi;
-  std::uint64_t lo = n.lo;
-  std::uint64_t q = 0;
-  for (int i = 0; i < 64; ++i) {
+  int skip = bit_length(d) + 63 - bit_length(n);  // floor(n / 2^(64 - skip)) < d
+  skip = skip < 0 ? 0 : (skip > 64 ? 64 : skip);
+  const U128 start = shl(n, skip);
+  std::uint64_t r = start.hi;
+  std::uint64_t lo = start.lo;  // dividend bits shift out at the top, quotient bits in at the bottom
+  for (int i = skip; i < 64; ++i) {
     const bool carry = (r >> 63) != 0;  // the shifted remainder has 65 bits
     r = (r << 1) | (lo >> 63);
     lo <<= 1;
-    q <<= 1;
     if (carry || r >= d) {
       r -= d;  // modulo 2^64: exact, since the true remainder is < d
-      q |= 1u;
+      lo |= 1u;
     }
   }
-  return DivResult{q, r};
+  return DivResult{lo, r};
 }
 
 /// round(n / d), ties to even, for d != 0; {1, 0} (>= 2^64) when the
@@ -207,28 +244,37 @@ constexpr U128 udiv_round(U128 n, std::uint64_t d) {
 /// round(v / 2^s), ties away from zero in magnitude, for 0 < s < 128.
 constexpr U128 round_shift_wide(U128 v, int s) { return shr(add(v, shl(U128{0, 1}, s - 1)), s); }
 
-/// Bit length of v > 0 (1..64).
-constexpr int bit_length(std::uint64_t v) { return 64 - std::countl_zero(v); }
-
-/// round(sqrt(n)) of an unsigned 128-bit integer, digit by digit (two bits
-/// of n per step, exactly 64 steps). Never a tie: n is an integer.
+/// round(sqrt(n)) of an unsigned 128-bit integer, digit by digit: each
+/// step brings down two bits of n (n.hi's, then n.lo's) and gives one root
+/// bit. Leading zero pairs of n give zero root bits and are skipped: at
+/// most 64 steps. The remainder is at most 2 root (< 2^65) between steps
+/// and 4 times that plus 3 within one: 64 bits and a small high word.
+/// Never a tie: n is an integer.
 constexpr std::uint64_t isqrt_round(U128 n) {
-  U128 rem{0, 0};
+  const int skip = (128 - bit_length(n)) / 2;
+  if (skip == 64) return 0;
+  std::uint64_t rem_lo = 0;
+  std::uint32_t rem_hi = 0;
   std::uint64_t root = 0;
-  for (int i = 0; i < 64; ++i) {
-    const std::uint64_t two_bits =
-        i < 32 ? (n.hi >> (62 - 2 * i)) & 3u : (n.lo >> (62 - 2 * (i - 32))) & 3u;
-    rem = shl(rem, 2);
-    rem.lo |= two_bits;
-    const U128 trial = add(shl(U128{0, root}, 2), U128{0, 1});  // 4 root + 1
-    root <<= 1;
-    if (!less(rem, trial)) {
-      rem = sub(rem, trial);
-      root |= 1u;
+  for (int half = skip / 32; half < 2; ++half) {
+    const int first = half == skip / 32 ? skip % 32 : 0;
+    std::uint64_t digits = (half == 0 ? n.hi : n.lo) << (2 * first);  // the pairs still to bring down, at the top
+    for (int i = first; i < 32; ++i) {
+      rem_hi = (rem_hi << 2) | static_cast<std::uint32_t>(rem_lo >> 62);
+      rem_lo = (rem_lo << 2) | (digits >> 62);
+      digits <<= 2;
+      const std::uint64_t trial_lo = (root << 2) | 1u;  // 4 root + 1
+      const auto trial_hi = static_cast<std::uint32_t>(root >> 62);
+      root <<= 1;
+      if (rem_hi > trial_hi || (rem_hi == trial_hi && rem_lo >= trial_lo)) {
+        rem_hi = rem_hi - trial_hi - (rem_lo < trial_lo ? 1u : 0u);
+        rem_lo -= trial_lo;
+        root |= 1u;
+      }
     }
   }
   // n = root^2 + rem; round(sqrt(n)) = root + 1 iff n > root^2 + root.
-  if (less(U128{0, root}, rem)) ++root;
+  if (rem_hi != 0 || rem_lo > root) ++root;
   return root;
 }
 
@@ -324,6 +370,14 @@ class FixedPoint {
   // ---- arithmetic: one correctly rounded result per operation --------------
 
   friend constexpr FixedPoint operator+(FixedPoint a, FixedPoint b) {
+    // The common case first: both magnitudes below 2^62 raw (so both finite,
+    // bits 63 and 62 equal), whose sum stays inside the finite range. Read
+    // on the high words: one test instead of four 64-bit comparisons.
+    const std::uint32_t ha = high_word(a.raw_);
+    const std::uint32_t hb = high_word(b.raw_);
+    if ((((ha ^ (ha << 1)) | (hb ^ (hb << 1))) >> 31) == 0) {
+      return from_raw(static_cast<Raw>(static_cast<std::uint64_t>(a.raw_) + static_cast<std::uint64_t>(b.raw_)));
+    }
     if (!a.is_finite() || !b.is_finite()) return propagate_add(a, b);
     const auto s = static_cast<Raw>(static_cast<std::uint64_t>(a.raw_) + static_cast<std::uint64_t>(b.raw_));
     const bool wrapped = ((a.raw_ >= 0) == (b.raw_ >= 0)) && ((s >= 0) != (a.raw_ >= 0));
@@ -346,7 +400,7 @@ class FixedPoint {
       return from_raw(negative ? detail::kNegOverflow : detail::kPosOverflow);
     }
     const detail::U128 p = detail::mul_wide(detail::magnitude(a.raw_), detail::magnitude(b.raw_));
-    return from_raw(detail::to_raw_saturating(detail::round_shift(p, kFracBits), negative));
+    return from_raw(detail::to_raw_saturating(detail::round_shift_by<kFracBits>(p), negative));
   }
 
   friend constexpr FixedPoint operator/(FixedPoint a, FixedPoint b) {
@@ -415,6 +469,10 @@ class FixedPoint {
       return std::cmp_less(v, 0) ? detail::kNegOverflow : detail::kPosOverflow;
     }
     return static_cast<Raw>(v) * kOne;
+  }
+
+  static constexpr std::uint32_t high_word(Raw v) {
+    return static_cast<std::uint32_t>(static_cast<std::uint64_t>(v) >> 32);
   }
 
   /// Sum where an operand is saturated: saturation sticks (opposite signs,
