@@ -40,6 +40,8 @@ const FilterEntry kFilters[] = {
      &r2aekf_paper_setup, &run_r2aekf_paper},
     {"r2aekf-f32", "R2-AEKF default mode in float (the Cortex-M4F scalar)", hal::FrameKind::kRadar, &r2aekf_f32_setup,
      &run_r2aekf_f32},
+    {"r2aekf-q31_32", "R2-AEKF default mode in Q31.32 fixed point (the Cortex-M0+ scalar)", hal::FrameKind::kRadar,
+     &r2aekf_q31_32_setup, &run_r2aekf_q31_32},
     {"ukf", "UKF (paper 001), CA-2D, polar radar; double", hal::FrameKind::kRadar, &ukf_setup, &run_ukf},
     {"ukf-f32", "the same UKF in float", hal::FrameKind::kRadar, &ukf_f32_setup, &run_ukf_f32},
     {"cdkf", "CDKF (paper 001), CA-2D, polar radar; double", hal::FrameKind::kRadar, &cdkf_setup, &run_cdkf},

@@ -10,6 +10,8 @@
 
 #include "filters/settings.hpp"
 #include "kestrel/host/board.hpp"
+#include "kestrel/scalar/fixed_point_eigen.hpp"
+#include "kestrel/scalar/fixed_point_math.hpp"
 #include "pipeline/stream_run.hpp"
 
 namespace kestrel::sim {
@@ -190,6 +192,9 @@ FilterSetup r2aekf_paper_setup(const FilterOptions& options) {
 FilterSetup r2aekf_f32_setup(const FilterOptions& options) {
   return r2aekf_setup_for(options, R2AekfConfig<double>{}, "R2-AEKF default mode (float)");
 }
+FilterSetup r2aekf_q31_32_setup(const FilterOptions& options) {
+  return r2aekf_setup_for(options, R2AekfConfig<double>{}, "R2-AEKF default mode (Q31.32)");
+}
 
 StreamRunResult run_r2aekf(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
   return run_with<double>(std::move(stream), options, R2AekfConfig<double>{}, budget_ns);
@@ -201,6 +206,10 @@ StreamRunResult run_r2aekf_paper(StreamInput stream, const FilterOptions& option
 StreamRunResult run_r2aekf_f32(StreamInput stream, const FilterOptions& options,
                                std::uint64_t budget_ns) {
   return run_with<float>(std::move(stream), options, R2AekfConfig<float>{}, budget_ns);
+}
+StreamRunResult run_r2aekf_q31_32(StreamInput stream, const FilterOptions& options,
+                                  std::uint64_t budget_ns) {
+  return run_with<Q31_32>(std::move(stream), options, convert<Q31_32>(R2AekfConfig<double>{}), budget_ns);
 }
 
 const FilterEntry& r2aekf_study_entry(const R2AekfConfig<double>& config) {

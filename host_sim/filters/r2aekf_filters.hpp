@@ -33,11 +33,14 @@ host::BoardRadarTracker<R2AekfCa<Scalar>> make_r2aekf_tracker(const FilterOption
 FilterSetup r2aekf_setup(const FilterOptions& options);
 FilterSetup r2aekf_paper_setup(const FilterOptions& options);
 FilterSetup r2aekf_f32_setup(const FilterOptions& options);
+FilterSetup r2aekf_q31_32_setup(const FilterOptions& options);
 StreamRunResult run_r2aekf(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns);
 StreamRunResult run_r2aekf_paper(StreamInput stream, const FilterOptions& options,
                                  std::uint64_t budget_ns);
 StreamRunResult run_r2aekf_f32(StreamInput stream, const FilterOptions& options,
                                std::uint64_t budget_ns);
+StreamRunResult run_r2aekf_q31_32(StreamInput stream, const FilterOptions& options,
+                                  std::uint64_t budget_ns);
 
 /// Parameters of a config, by name (summary.json, study tables).
 FilterSetup r2aekf_setup_for(const FilterOptions& options, const R2AekfConfig<double>& config, const char* label);

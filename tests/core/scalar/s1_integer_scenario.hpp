@@ -144,20 +144,26 @@ S1Tracker<Scalar> make_s1_tracker(bool tuned) {
                : make_radar_tracker<Scalar, 4, 4>(kParams, kConfig);
 }
 
-/// Runs S1 (or S1n) through the tracker on Scalar; visit(k, sample, tracker)
-/// after every step. @return false if a frame was refused.
-template <class Scalar, class Visit>
-bool run_s1(const S1Options& o, Visit&& visit) {
-  S1Tracker<Scalar> tracker = make_s1_tracker<Scalar>(o.tuned);
+/// Runs S1 (or S1n) through `tracker` (any radar tracker); visit(k, sample,
+/// tracker) after every step. @return false if a frame was refused.
+template <class Tracker, class Visit>
+bool run_s1_on(Tracker& tracker, const S1Options& o, Visit&& visit) {
   SplitMix64 rng(o.seed);
-  typename S1Tracker<Scalar>::Scan scan;
+  typename Tracker::Scan scan;
   for (int k = 0; k < o.steps; ++k) {
     const S1Sample sample = s1_sample(k, o, rng);
     if (hal::to_scan(s1_frame(sample), scan) != Status::kOk) return false;
     if (tracker.step(scan) != Status::kOk) return false;
-    visit(k, sample, tracker);
+    visit(k, sample, static_cast<const Tracker&>(tracker));
   }
   return true;
+}
+
+/// run_s1_on() with the EKF-CA tracker of make_s1_tracker() on Scalar.
+template <class Scalar, class Visit>
+bool run_s1(const S1Options& o, Visit&& visit) {
+  S1Tracker<Scalar> tracker = make_s1_tracker<Scalar>(o.tuned);
+  return run_s1_on(tracker, o, visit);
 }
 
 /// 64-bit FNV-1a over little-endian integers: the same on every host.

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "kestrel/scalar/fixed_point_io.hpp"
-#include "core/scalar/s1_integer_scenario.hpp"
+#include "core/scalar/s1_reports.hpp"
 #include "support/alloc_guard.hpp"
 
 namespace {
@@ -21,69 +21,17 @@ namespace {
 using kestrel::test::S1Options;
 using kestrel::test::S1Sample;
 using kestrel::test::S1Tracker;
-
-struct Report {
-  std::uint32_t id;
-  double x, y;
-};
-struct Step {
-  double truth_x, truth_y;
-  std::vector<Report> reports;
-};
+using Step = kestrel::test::S1Step;
+using Comparison = kestrel::test::S1Comparison;
+using kestrel::test::compare_s1;
+using kestrel::test::s1_rmse;
 
 template <class S>
 std::vector<Step> run(const S1Options& o) {
-  std::vector<Step> steps(static_cast<std::size_t>(o.steps));
-  const bool ok = kestrel::test::run_s1<S>(o, [&](int k, const S1Sample& s, const S1Tracker<S>& tr) {
-    Step& st = steps[static_cast<std::size_t>(k)];
-    st.truth_x = static_cast<double>(s.x_m);
-    st.truth_y = static_cast<double>(s.y_m);
-    for (const auto& r : tr.reports()) {
-      st.reports.push_back({r.track_id, kestrel::ScalarTraits<S>::to_double(r.x(0)),
-                            kestrel::ScalarTraits<S>::to_double(r.x(3))});
-    }
-  });
-  REQUIRE(ok);
+  auto tracker = kestrel::test::make_s1_tracker<S>(o.tuned);
+  std::vector<Step> steps = kestrel::test::s1_reports(tracker, o);
+  REQUIRE(steps.size() == static_cast<std::size_t>(o.steps));
   return steps;
-}
-
-/// Tracker-level position RMSE: per step the reported track nearest the truth.
-double rmse(const std::vector<Step>& steps) {
-  double sum = 0;
-  int n = 0;
-  for (const auto& s : steps) {
-    if (s.reports.empty()) continue;
-    double best = 1e300;
-    for (const auto& r : s.reports) best = std::min(best, std::hypot(r.x - s.truth_x, r.y - s.truth_y));
-    sum += best * best;
-    ++n;
-  }
-  return n > 0 ? std::sqrt(sum / n) : 0.0;
-}
-
-struct Comparison {
-  double max_deviation_m = 0;  ///< Largest |p - p_double| over every report of every step.
-  int decision_mismatches = 0; ///< Steps whose report set (count, ids) differs from double's.
-};
-
-Comparison compare(const std::vector<Step>& ref, const std::vector<Step>& got) {
-  Comparison c;
-  for (std::size_t k = 0; k < ref.size(); ++k) {
-    if (ref[k].reports.size() != got[k].reports.size()) {
-      ++c.decision_mismatches;
-      continue;
-    }
-    for (std::size_t i = 0; i < ref[k].reports.size(); ++i) {
-      const Report& a = ref[k].reports[i];
-      const Report& b = got[k].reports[i];
-      if (a.id != b.id) {
-        ++c.decision_mismatches;
-        continue;
-      }
-      c.max_deviation_m = std::max(c.max_deviation_m, std::hypot(a.x - b.x, a.y - b.y));
-    }
-  }
-  return c;
 }
 
 bool print_table() { return std::getenv("KESTREL_PRINT_ACCURACY") != nullptr; }
@@ -114,21 +62,21 @@ SCENARIO("the fixed-point radar tracker matches the double tracker on S1 and S1n
         const auto q31 = run<kestrel::Q31_32>(o);
         const auto q23 = run<kestrel::Q23_40>(o);
         overflows += kestrel::fixed_point_overflow_count();
-        const Comparison c31 = compare(d, q31), c23 = compare(d, q23), cf = compare(d, f);
-        const double r = rmse(d);
+        const Comparison c31 = compare_s1(d, q31), c23 = compare_s1(d, q23), cf = compare_s1(d, f);
+        const double r = s1_rmse(d);
         worst_dev_q31 = std::max(worst_dev_q31, c31.max_deviation_m);
         worst_dev_q23 = std::max(worst_dev_q23, c23.max_deviation_m);
         worst_dev_f = std::max(worst_dev_f, cf.max_deviation_m);
-        worst_rmse_q31 = std::max(worst_rmse_q31, std::fabs(rmse(q31) / r - 1));
-        worst_rmse_q23 = std::max(worst_rmse_q23, std::fabs(rmse(q23) / r - 1));
-        worst_rmse_f = std::max(worst_rmse_f, std::fabs(rmse(f) / r - 1));
+        worst_rmse_q31 = std::max(worst_rmse_q31, std::fabs(s1_rmse(q31) / r - 1));
+        worst_rmse_q23 = std::max(worst_rmse_q23, std::fabs(s1_rmse(q23) / r - 1));
+        worst_rmse_f = std::max(worst_rmse_f, std::fabs(s1_rmse(f) / r - 1));
         mismatches_q31 += c31.decision_mismatches;
         mismatches_q23 += c23.decision_mismatches;
         ++runs;
         if (print_table()) {
           std::printf("%-4s %-5s %4d | %9.4f | %9.4f %8.1e | %9.4f %8.1e | %9.4f %8.1e\n", noisy ? "S1n" : "S1",
-                      tuned ? "160" : "1.6", seed, r, rmse(f), cf.max_deviation_m, rmse(q31), c31.max_deviation_m,
-                      rmse(q23), c23.max_deviation_m);
+                      tuned ? "160" : "1.6", seed, r, s1_rmse(f), cf.max_deviation_m, s1_rmse(q31), c31.max_deviation_m,
+                      s1_rmse(q23), c23.max_deviation_m);
         }
       }
     }

@@ -849,7 +849,11 @@ class Ekf {
   const auto& linearisation() const {
     if (!lin_.valid) {
       lin_.z_hat = measurement_.predict(x_);
-      lin_.J.Hc = measurement_.jacobian_columns(x_);
+      if constexpr (requires { measurement_.jacobian_columns(x_, lin_.z_hat); }) {
+        lin_.J.Hc = measurement_.jacobian_columns(x_, lin_.z_hat);  // reuses h(x)'s range
+      } else {
+        lin_.J.Hc = measurement_.jacobian_columns(x_);
+      }
       lin_.HPHt = lin_.J.hpht(P_);
       lin_.factor_valid = false;
       lin_.valid = true;

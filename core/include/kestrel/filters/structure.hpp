@@ -50,7 +50,9 @@ concept UnitUpperAxisTransition = BlockDiagonalMotion<M> && requires { requires 
 
 /// A measurement model whose Jacobian is zero outside the state columns
 /// kJacobianColumns (contract: jacobian(x) has jacobian_columns(x).col(j) in
-/// column kJacobianColumns[j] and zeros elsewhere).
+/// column kJacobianColumns[j] and zeros elsewhere). It may also offer
+/// jacobian_columns(x, predict(x)), equal to jacobian_columns(x), for
+/// columns that reuse part of h(x) (the radar's range).
 template <class H>
 concept SparseJacobianMeasurement = !HidesStructure<H> && requires(const H& h, const typename H::State& x) {
   { H::kJacobianColumns.size() } -> std::convertible_to<std::size_t>;

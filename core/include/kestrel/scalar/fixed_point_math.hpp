@@ -10,6 +10,7 @@
 // and figures: docs/fixed-point.md, "Formats".
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cstdint>
 
@@ -132,8 +133,10 @@ constexpr FixedPoint<F> hypot(FixedPoint<F> a, FixedPoint<F> b) {
   if (!a.is_finite() || !b.is_finite()) return FixedPoint<F>::from_raw(detail::kPosOverflow);
   const std::uint64_t ma = detail::magnitude(a.raw());
   const std::uint64_t mb = detail::magnitude(b.raw());
-  // (raw_a^2 + raw_b^2) < 2^127: the sum of two < 2^126 squares cannot carry out.
-  const detail::U128 n = detail::add(detail::mul_wide(ma, ma), detail::mul_wide(mb, mb));
+  // (raw_a^2 + raw_b^2) < 2^127: the sum of two < 2^126 squares cannot carry
+  // out. A loop, so that a Thumb-1 image holds one inline copy of the product.
+  detail::U128 n{0, 0};
+  for (const std::uint64_t m : std::array<std::uint64_t, 2>{ma, mb}) n = detail::add(n, detail::mul_wide(m, m));
   return FixedPoint<F>::from_raw(
       detail::to_raw_saturating(detail::U128{0, detail::isqrt_round(n)}, false));
 }

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/scalar/kernel_hash.hpp"
 #include "core/scalar/s1_integer_scenario.hpp"
 #include "support/arm_linux_user.hpp"
 
@@ -24,7 +25,7 @@ using kestrel::test::arm_linux_user::exit_with;
 using kestrel::test::arm_linux_user::write_text;
 
 void write_hash(const char* label, std::uint64_t h, bool ok) {
-  char line[48];
+  char line[64];
   std::size_t i = 0;
   for (const char* p = label; *p != '\0'; ++p) line[i++] = *p;
   line[i++] = ' ';
@@ -44,6 +45,11 @@ extern "C" [[noreturn]] void kestrel_assert_failed(const char*, int, const char*
 }
 
 extern "C" [[noreturn]] void _start() {
+  const std::uint64_t k31 = kestrel::test::kernel_hash<32>();
+  const std::uint64_t k23 = kestrel::test::kernel_hash<40>();
+  const bool kernels_ok = k31 == kestrel::test::kKernelHashQ31_32 && k23 == kestrel::test::kKernelHashQ23_40;
+  write_hash("kernels Q31.32", k31, k31 == kestrel::test::kKernelHashQ31_32);
+  write_hash("kernels Q23.40", k23, k23 == kestrel::test::kKernelHashQ23_40);
   const std::uint64_t q31 = kestrel::test::s1_golden_hash<32>();
   const std::uint64_t q23 = kestrel::test::s1_golden_hash<40>();
   const bool ok31 = q31 == kestrel::test::kS1GoldenHashQ31_32;
@@ -52,5 +58,5 @@ extern "C" [[noreturn]] void _start() {
   write_hash("Q23.40", q23, ok23);
   const bool clean = kestrel::fixed_point_overflow_count() == 0;
   write_text(clean ? "ARMv6-M (Cortex-M0+ code), overflow events 0\n" : "overflow events counted\n");
-  exit_with(ok31 && ok23 && clean ? 0 : 1);
+  exit_with(kernels_ok && ok31 && ok23 && clean ? 0 : 1);
 }

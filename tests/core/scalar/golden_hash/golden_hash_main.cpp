@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "core/scalar/kernel_hash.hpp"
 #include "core/scalar/s1_integer_scenario.hpp"
 
 extern "C" [[noreturn]] void kestrel_assert_failed(const char* file, int line, const char* expr) {
@@ -17,6 +18,12 @@ extern "C" [[noreturn]] void kestrel_assert_failed(const char* file, int line, c
 }
 
 int main() {
+  const std::uint64_t k31 = kestrel::test::kernel_hash<32>();
+  const std::uint64_t k23 = kestrel::test::kernel_hash<40>();
+  const bool kernels_ok = k31 == kestrel::test::kKernelHashQ31_32 && k23 == kestrel::test::kKernelHashQ23_40;
+  std::printf("kernels Q31.32 0x%08lx%08lx, Q23.40 0x%08lx%08lx %s\n", static_cast<unsigned long>(k31 >> 32),
+              static_cast<unsigned long>(k31 & 0xFFFFFFFFu), static_cast<unsigned long>(k23 >> 32),
+              static_cast<unsigned long>(k23 & 0xFFFFFFFFu), kernels_ok ? "ok" : "MISMATCH");
   const std::uint64_t q31 = kestrel::test::s1_golden_hash<32>();
   const std::uint64_t q23 = kestrel::test::s1_golden_hash<40>();
   const bool ok31 = q31 == kestrel::test::kS1GoldenHashQ31_32;
@@ -28,5 +35,5 @@ int main() {
               static_cast<unsigned long>(q23 & 0xFFFFFFFFu), ok23 ? "ok" : "MISMATCH");
   std::printf("sizeof(void*) = %u, overflow events = %u\n", static_cast<unsigned>(sizeof(void*)),
               static_cast<unsigned>(kestrel::fixed_point_overflow_count()));
-  return ok31 && ok23 && kestrel::fixed_point_overflow_count() == 0 ? 0 : 1;
+  return kernels_ok && ok31 && ok23 && kestrel::fixed_point_overflow_count() == 0 ? 0 : 1;
 }

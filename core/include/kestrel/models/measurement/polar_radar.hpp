@@ -51,35 +51,14 @@ struct PolarRadar {
   /// refuses the update with kNonFinite (the radar cannot see a target on
   /// itself).
   CompactJacobian jacobian_columns(const State& x) const {
-    using T = ScalarTraits<Scalar>;
-    const Scalar px = x(Motion::Layout::kX);
-    const Scalar py = x(Motion::Layout::kY);
-    const Scalar r = range_of(px, py);
-    CompactJacobian Hc;
-    if constexpr (T::kIsFixedPoint) {
-      // One division (a 64-step loop in fixed point) instead of four: the
-      // reciprocal 2^16 / r, scaled so that it keeps its relative precision
-      // at long range (Q31.32 at 10 km: 4e-11 instead of 2e-6 for 1 / r),
-      // each product then taken back by 2^-16 (exact scale, one rounding).
-      // r^2 would leave Q23.40's range beyond 2.9 km, so the bearing row
-      // applies 1/r twice. Below r = 2^16 LSB (Q31.32: 15 um) the
-      // reciprocal saturates and the update is refused (kNonFinite), as at
-      // r = 0.
-      constexpr Scalar kScale(65536.0);
-      constexpr Scalar kUnscale(1.0 / 65536.0);
-      const Scalar inv_r = kScale / r;
-      Hc(kRange, 0) = px * inv_r * kUnscale;
-      Hc(kRange, 1) = py * inv_r * kUnscale;
-      Hc(kBearing, 0) = -Hc(kRange, 1) * inv_r * kUnscale;
-      Hc(kBearing, 1) = Hc(kRange, 0) * inv_r * kUnscale;
-    } else {
-      Hc(kRange, 0) = px / r;
-      Hc(kRange, 1) = py / r;
-      const Scalar r2 = r * r;
-      Hc(kBearing, 0) = -py / r2;
-      Hc(kBearing, 1) = px / r2;
-    }
-    return Hc;
+    return columns_at(x, range_of(x(Motion::Layout::kX), x(Motion::Layout::kY)));
+  }
+
+  /// The same columns where h(x) is already known (z_hat = predict(x)): its
+  /// range is the r they need, so the square root is not taken twice (a
+  /// 64-step loop in fixed point).
+  CompactJacobian jacobian_columns(const State& x, const Measurement& z_hat) const {
+    return columns_at(x, z_hat(kRange));
   }
 
   /// dh/dX: jacobian_columns() in columns x and y, zero elsewhere.
@@ -147,6 +126,39 @@ struct PolarRadar {
     J << c, -z(kRange) * s,
          s, z(kRange) * c;
     P = J * noise() * J.transpose();
+  }
+
+ private:
+  /// Columns x and y of dh/dX at x, whose range r = sqrt(x^2 + y^2) is given.
+  CompactJacobian columns_at(const State& x, Scalar r) const {
+    using T = ScalarTraits<Scalar>;
+    const Scalar px = x(Motion::Layout::kX);
+    const Scalar py = x(Motion::Layout::kY);
+    CompactJacobian Hc;
+    if constexpr (T::kIsFixedPoint) {
+      // One division (a 64-step loop in fixed point) instead of four: the
+      // reciprocal 2^16 / r, scaled so that it keeps its relative precision
+      // at long range (Q31.32 at 10 km: 4e-11 instead of 2e-6 for 1 / r),
+      // each product then taken back by 2^-16 (exact scale, one rounding).
+      // r^2 would leave Q23.40's range beyond 2.9 km, so the bearing row
+      // applies 1/r twice. Below r = 2^16 LSB (Q31.32: 15 um) the
+      // reciprocal saturates and the update is refused (kNonFinite), as at
+      // r = 0.
+      constexpr Scalar kScale(65536.0);
+      constexpr Scalar kUnscale(1.0 / 65536.0);
+      const Scalar inv_r = kScale / r;
+      Hc(kRange, 0) = px * inv_r * kUnscale;
+      Hc(kRange, 1) = py * inv_r * kUnscale;
+      Hc(kBearing, 0) = -Hc(kRange, 1) * inv_r * kUnscale;
+      Hc(kBearing, 1) = Hc(kRange, 0) * inv_r * kUnscale;
+    } else {
+      Hc(kRange, 0) = px / r;
+      Hc(kRange, 1) = py / r;
+      const Scalar r2 = r * r;
+      Hc(kBearing, 0) = -py / r2;
+      Hc(kBearing, 1) = px / r2;
+    }
+    return Hc;
   }
 };
 

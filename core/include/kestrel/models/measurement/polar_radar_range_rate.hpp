@@ -72,33 +72,13 @@ struct PolarRadarRangeRate {
   ///   over r: d(u . v)/dp = v^T (I - u u^T)/r), drr/dv = u^T.
   /// Range and bearing do not depend on velocity (zeros in columns vx, vy).
   CompactJacobian jacobian_columns(const State& x) const {
-    using T = ScalarTraits<Scalar>;
-    const Scalar px = x(Motion::Layout::kX);
-    const Scalar py = x(Motion::Layout::kY);
-    const Scalar vx = x(Motion::Layout::kVx);
-    const Scalar vy = x(Motion::Layout::kVy);
-    const Scalar r = range_of(px, py);
-    const Scalar ux = px / r;
-    const Scalar uy = py / r;
-    const Scalar rr = ux * vx + uy * vy;
-    constexpr int kCx = 0, kCvx = 1, kCy = 2, kCvy = 3;  // order of kJacobianColumns
-    CompactJacobian Hc = CompactJacobian::Zero();
-    Hc(kRange, kCx) = ux;
-    Hc(kRange, kCy) = uy;
-    if constexpr (T::kIsFixedPoint) {
-      // r^2 would leave Q23.40's range beyond 2.9 km: divide by r twice.
-      Hc(kBearing, kCx) = -uy / r;
-      Hc(kBearing, kCy) = ux / r;
-    } else {
-      const Scalar r2 = r * r;
-      Hc(kBearing, kCx) = -py / r2;
-      Hc(kBearing, kCy) = px / r2;
-    }
-    Hc(kRangeRate, kCx) = (vx - rr * ux) / r;
-    Hc(kRangeRate, kCy) = (vy - rr * uy) / r;
-    Hc(kRangeRate, kCvx) = ux;
-    Hc(kRangeRate, kCvy) = uy;
-    return Hc;
+    return columns_at(x, range_of(x(Motion::Layout::kX), x(Motion::Layout::kY)));
+  }
+
+  /// The same columns where h(x) is already known (z_hat = predict(x)): its
+  /// range is the r they need, so the square root is not taken twice.
+  CompactJacobian jacobian_columns(const State& x, const Measurement& z_hat) const {
+    return columns_at(x, z_hat(kRange));
   }
 
   /// dh/dX: jacobian_columns() in columns x, vx, y, vy, zero elsewhere.
@@ -142,6 +122,37 @@ struct PolarRadarRangeRate {
     rb.sigma_range_m = sigma_range_m;
     rb.sigma_bearing_rad = sigma_bearing_rad;
     return rb;
+  }
+
+ private:
+  /// Columns x, vx, y, vy of dh/dX at x, whose range r = sqrt(x^2 + y^2) is given.
+  CompactJacobian columns_at(const State& x, Scalar r) const {
+    using T = ScalarTraits<Scalar>;
+    const Scalar px = x(Motion::Layout::kX);
+    const Scalar py = x(Motion::Layout::kY);
+    const Scalar vx = x(Motion::Layout::kVx);
+    const Scalar vy = x(Motion::Layout::kVy);
+    const Scalar ux = px / r;
+    const Scalar uy = py / r;
+    const Scalar rr = ux * vx + uy * vy;
+    constexpr int kCx = 0, kCvx = 1, kCy = 2, kCvy = 3;  // order of kJacobianColumns
+    CompactJacobian Hc = CompactJacobian::Zero();
+    Hc(kRange, kCx) = ux;
+    Hc(kRange, kCy) = uy;
+    if constexpr (T::kIsFixedPoint) {
+      // r^2 would leave Q23.40's range beyond 2.9 km: divide by r twice.
+      Hc(kBearing, kCx) = -uy / r;
+      Hc(kBearing, kCy) = ux / r;
+    } else {
+      const Scalar r2 = r * r;
+      Hc(kBearing, kCx) = -py / r2;
+      Hc(kBearing, kCy) = px / r2;
+    }
+    Hc(kRangeRate, kCx) = (vx - rr * ux) / r;
+    Hc(kRangeRate, kCy) = (vy - rr * uy) / r;
+    Hc(kRangeRate, kCvx) = ux;
+    Hc(kRangeRate, kCvy) = uy;
+    return Hc;
   }
 };
 
