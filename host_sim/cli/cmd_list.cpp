@@ -61,7 +61,8 @@ int cmd_list(bool settings) {
   for (const std::string& n : sonar_scenario_names()) std::printf(" %s", n.c_str());
   std::printf("\n  filter %s: the sonar tracker (keys: list --settings; its other options on `sonar`)\n",
               std::string(kSonarFilterName).c_str());
-  std::printf("multi-target radar scenarios (crossing, raid, formation-split above): multi only");
+  std::printf("multi-target radar scenarios (crossing, raid, formation-split above): run or multi, with ekf-ca or "
+              "imm, scored as `multi` scores them (OSPA, GOSPA, swaps)");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");
   return 0;

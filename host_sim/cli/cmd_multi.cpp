@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/commands.hpp"
 #include "filters/sensor_settings.hpp"
 #include "metrics/monte_carlo_stats.hpp"
 #include "montecarlo/multi_run.hpp"
@@ -127,6 +128,77 @@ void write_steps_csv(const std::filesystem::path& path, const ScenarioInfo& info
   }
 }
 
+/// The runs' parameters: the options' associator (GNN by default with more
+/// than one target), filter, scoring and budget over `options`, the radar
+/// tracker's settings already resolved.
+MultiRunParams multi_params(const MultiOptions& o, const ScenarioInfo& info, const FilterOptions& options) {
+  if (info.targets < 2) throw std::invalid_argument("'" + info.name + "' is a single-target scenario: use `run`");
+  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
+  if (!(o.cutoff_m > 0.0) || !(o.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
+  if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
+  MultiRunParams config;
+  config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
+  config.filter = multi_filter_by_name(o.filter);
+  config.options = options;
+  if (o.gate_tentative) config.gate_tentative = gate_option(*o.gate_tentative, "--gate-tentative");
+  config.spa = SpaParams{o.cutoff_m, o.order};
+  config.persistence_steps = o.persistence_steps;
+  config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  return config;
+}
+
+int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRunParams& config) {
+  const ScenarioInfo& info = scenario.info();
+  const std::filesystem::path dir =
+      o.out.empty() ? std::filesystem::path("results") / (info.name + "-multi") : std::filesystem::path(o.out);
+  std::filesystem::create_directories(dir);
+
+  const McResult main = run_mc(scenario, o, config);
+  const RadarTrackerParams p = radar_tracker_params(config.options);
+  char filter[64];
+  if (config.filter == MultiFilter::kImm) {
+    std::snprintf(filter, sizeof filter, "IMM CV/CA/CT (CA qj %g)", imm_params(config.options).ca_qj);
+  } else {
+    std::snprintf(filter, sizeof filter, "EKF-CA qj %g", p.qj);
+  }
+  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), %s, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
+              info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
+              static_cast<unsigned long long>(o.seed + o.runs - 1), filter, unsigned{p.confirm_m},
+              unsigned{p.confirm_n}, p.max_speed_mps, multi_associator_name(config.associator), o.cutoff_m, o.order);
+  const Summary s = summarise(main.runs);
+  print_summary(multi_associator_name(config.associator), s);
+  write_runs_csv(dir / "multi_runs.csv", o, multi_associator_name(config.associator), main.runs, false);
+  std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>> sets{
+      {multi_associator_name(config.associator), &main.runs}};
+  McResult oracle;
+  if (o.compare_oracle && config.associator != MultiAssociator::kOracle) {
+    MultiRunParams oc = config;
+    oc.associator = MultiAssociator::kOracle;
+    oracle = run_mc(scenario, o, oc);
+    const Summary so = summarise(oracle.runs);
+    print_summary("oracle", so);
+    write_runs_csv(dir / "multi_runs.csv", o, "oracle", oracle.runs, true);
+    sets.emplace_back("oracle", &oracle.runs);
+    // Paired over seeds: the per-run excess of GOSPA over the oracle's,
+    // relative to the oracle's mean.
+    std::vector<double> excess;
+    for (std::size_t i = 0; i < o.runs; ++i) excess.push_back(main.runs[i].mean_gospa_m - oracle.runs[i].mean_gospa_m);
+    const MeanCi e = mean_ci95(excess);
+    std::printf(" GOSPA %s / oracle: %.4f; paired excess %.3f m [%.3f, %.3f], i.e. %+.1f %% [%+.1f, %+.1f] of the oracle's\n",
+                multi_associator_name(config.associator), s.gospa.mean / so.gospa.mean, e.mean, e.ci95_low,
+                e.ci95_high, 100.0 * e.mean / so.gospa.mean, 100.0 * e.ci95_low / so.gospa.mean,
+                100.0 * e.ci95_high / so.gospa.mean);
+  }
+  write_steps_csv(dir / "multi_steps.csv", info, sets);
+  std::printf("wrote %s/{multi_runs.csv, multi_steps.csv}\n", dir.c_str());
+  if (o.plots && plot_gospa(dir / "multi_steps.csv", dir / "multi_gospa.png",
+                            info.name + " / seeds " + std::to_string(o.seed) + ".." +
+                                std::to_string(o.seed + o.runs - 1))) {
+    std::printf("wrote %s/multi_gospa.png\n", dir.c_str());
+  }
+  return 0;
+}
+
 }  // namespace
 
 CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
@@ -157,72 +229,31 @@ CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
 
 int cmd_multi(const MultiOptions& o) {
   const auto scenario = make_scenario(o.scenario);
-  const ScenarioInfo& info = scenario->info();
-  if (info.targets < 2) throw std::invalid_argument("'" + info.name + "' is a single-target scenario: use `run`");
-  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  if (!(o.cutoff_m > 0.0) || !(o.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
-  if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
-  MultiRunParams config;
-  config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
-  config.filter = multi_filter_by_name(o.filter);
+  FilterOptions options;
   std::vector<Setting> settings;
   if (!o.config.empty()) settings = read_config_file(o.config);
   for (const std::string& s : o.sets) settings.push_back(parse_setting(s, "--set"));
-  apply_settings(settings, config.options);
-  if (o.qj.has_value()) config.options.qj = o.qj;
-  if (o.gate_tentative) config.gate_tentative = gate_option(*o.gate_tentative, "--gate-tentative");
-  config.spa = SpaParams{o.cutoff_m, o.order};
-  config.persistence_steps = o.persistence_steps;
-  config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  apply_settings(settings, options);
+  if (o.qj.has_value()) options.qj = o.qj;
+  return report_multi(o, *scenario, multi_params(o, scenario->info(), options));
+}
 
-  const std::filesystem::path dir =
-      o.out.empty() ? std::filesystem::path("results") / (info.name + "-multi") : std::filesystem::path(o.out);
-  std::filesystem::create_directories(dir);
-
-  const McResult main = run_mc(*scenario, o, config);
-  const RadarTrackerParams p = radar_tracker_params(config.options);
-  char filter[64];
-  if (config.filter == MultiFilter::kImm) {
-    std::snprintf(filter, sizeof filter, "IMM CV/CA/CT (CA qj %g)", imm_params(config.options).ca_qj);
-  } else {
-    std::snprintf(filter, sizeof filter, "EKF-CA qj %g", p.qj);
+int run_multi_target_scenario(const RunOptions& r) {
+  if (!r.asterix_out.path.empty()) {
+    throw std::invalid_argument("--asterix-out: a run of a multi-target scenario writes no CAT062");
   }
-  std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), %s, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
-              info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
-              static_cast<unsigned long long>(o.seed + o.runs - 1), filter, unsigned{p.confirm_m},
-              unsigned{p.confirm_n}, p.max_speed_mps, multi_associator_name(config.associator), o.cutoff_m, o.order);
-  const Summary s = summarise(main.runs);
-  print_summary(multi_associator_name(config.associator), s);
-  write_runs_csv(dir / "multi_runs.csv", o, multi_associator_name(config.associator), main.runs, false);
-  std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>> sets{
-      {multi_associator_name(config.associator), &main.runs}};
-  McResult oracle;
-  if (o.compare_oracle && config.associator != MultiAssociator::kOracle) {
-    MultiRunParams oc = config;
-    oc.associator = MultiAssociator::kOracle;
-    oracle = run_mc(*scenario, o, oc);
-    const Summary so = summarise(oracle.runs);
-    print_summary("oracle", so);
-    write_runs_csv(dir / "multi_runs.csv", o, "oracle", oracle.runs, true);
-    sets.emplace_back("oracle", &oracle.runs);
-    // Paired over seeds: the per-run excess of GOSPA over the oracle's,
-    // relative to the oracle's mean.
-    std::vector<double> excess;
-    for (std::size_t i = 0; i < o.runs; ++i) excess.push_back(main.runs[i].mean_gospa_m - oracle.runs[i].mean_gospa_m);
-    const MeanCi e = mean_ci95(excess);
-    std::printf(" GOSPA %s / oracle: %.4f; paired excess %.3f m [%.3f, %.3f], i.e. %+.1f %% [%+.1f, %+.1f] of the oracle's\n",
-                multi_associator_name(config.associator), s.gospa.mean / so.gospa.mean, e.mean, e.ci95_low,
-                e.ci95_high, 100.0 * e.mean / so.gospa.mean, 100.0 * e.ci95_low / so.gospa.mean,
-                100.0 * e.ci95_high / so.gospa.mean);
-  }
-  write_steps_csv(dir / "multi_steps.csv", info, sets);
-  std::printf("wrote %s/{multi_runs.csv, multi_steps.csv}\n", dir.c_str());
-  if (o.plots && plot_gospa(dir / "multi_steps.csv", dir / "multi_gospa.png",
-                            info.name + " / seeds " + std::to_string(o.seed) + ".." +
-                                std::to_string(o.seed + o.runs - 1))) {
-    std::printf("wrote %s/multi_gospa.png\n", dir.c_str());
-  }
-  return 0;
+  const auto scenario = make_scenario(r.scenario);
+  MultiOptions o;  // multi's defaults for the rest: GNN, c 500 m, p 2, swaps held 3 steps
+  o.scenario = r.scenario;
+  o.runs = r.runs;
+  o.seed = r.seed;
+  o.jobs = r.jobs;
+  o.out = r.out;
+  o.plots = r.plots;
+  o.filter = r.filter.filter;
+  o.budget_us = r.filter.budget_us;
+  // main() has resolved --config, --set and the options of their own.
+  return report_multi(o, *scenario, multi_params(o, scenario->info(), r.filter.options));
 }
 
 }  // namespace kestrel::sim::cli

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim run`: one scenario, one filter, N seeds. A PCL or sonar
-// scenario runs the Monte Carlo of `kestrel-sim pcl` / `sonar` (the same code).
+// scenario runs the Monte Carlo of `kestrel-sim pcl` / `sonar`, a
+// multi-target one that of `multi` (the same code).
 #include <cstdio>
 #include <filesystem>
 #include <optional>
@@ -95,13 +96,10 @@ int cmd_run(const RunOptions& o) {
     return run_sensor_scenario(o, *kind);
   }
   if (kind.has_value()) check_filter_fits(o.filter, *kind, "scenario '" + o.scenario + "' is a radar scenario");
-  const MonteCarloParams config = config_from(o.filter, o.runs, o.seed, o.jobs);
   const auto made = make_scenario(o.scenario);
-  // Single-target scoring (one truth, RMSE) does not apply to several targets.
-  if (made->info().targets > 1) {
-    throw std::invalid_argument("'" + made->info().name + "' has " + std::to_string(made->info().targets) +
-                                " targets: use `kestrel-sim multi -s " + made->info().name + "`");
-  }
+  // Several targets: multi's runs and scoring (OSPA, GOSPA, swaps), not RMSE.
+  if (made->info().targets > 1) return run_multi_target_scenario(o);
+  const MonteCarloParams config = config_from(o.filter, o.runs, o.seed, o.jobs);
   const std::string scenario = made->info().name;
   const std::filesystem::path dir = o.out.empty() ? std::filesystem::path("results") / scenario : std::filesystem::path(o.out);
   const ScenarioReport report = run_scenario_report(scenario, o.filter.filter, config, dir, o.plots);

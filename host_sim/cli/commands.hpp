@@ -89,6 +89,12 @@ int cmd_run(const RunOptions& o);
 /// and sonar parts come through it too.
 int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind);
 
+/// `run` of a multi-target scenario (crossing, raid, formation-split): the
+/// Monte Carlo, files and printout of `multi` (its defaults: GNN, OSPA/GOSPA
+/// c 500 m, p 2) with run's scenario, runs, seed, jobs, out, plots, budget,
+/// filter (ekf-ca or imm) and resolved filter options. cli/cmd_multi.cpp.
+int run_multi_target_scenario(const RunOptions& o);
+
 /// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).
 void print_cat062_written(const std::string& path, const StreamRunResult& r);
 
