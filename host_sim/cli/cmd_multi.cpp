@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -12,12 +13,17 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "filters/ekf_ca.hpp"
+#include "filters/imm_filters.hpp"
 #include "filters/sensor_settings.hpp"
 #include "metrics/monte_carlo_stats.hpp"
 #include "montecarlo/multi_run.hpp"
 #include "pipeline/worker_pool.hpp"
 #include "plots/plot_runner.hpp"
+#include "report/output_files.hpp"
+#include "report/summary_json.hpp"
 #include "scenarios/registry.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -75,6 +81,47 @@ void print_summary(const char* label, const Summary& s) {
   print_ci("fragmentations per run", s.fragmentations, "");
   print_ci("time to confirm", s.time_to_confirm, "s");
   print_ci("targets never confirmed per run", s.unconfirmed, "");
+}
+
+nlohmann::json summary_json(const Summary& s) {
+  return {{"gospa_m", interval_json(s.gospa)},
+          {"ospa_m", interval_json(s.ospa)},
+          {"gospa_localisation_m", interval_json(s.localisation)},
+          {"missed_targets_per_step", interval_json(s.missed)},
+          {"false_tracks_per_step", interval_json(s.false_per_step)},
+          {"track_swaps_per_run", interval_json(s.swaps)},
+          {"runs_without_swap", interval_json(s.no_swap)},
+          {"false_confirmed_tracks_per_run", interval_json(s.false_tracks)},
+          {"fragmentations_per_run", interval_json(s.fragmentations)},
+          {"time_to_confirm_s", interval_json(s.time_to_confirm)},
+          {"targets_never_confirmed_per_run", interval_json(s.unconfirmed)}};
+}
+
+/// The results[scenario][filter] entry of summary.json: the settings, the
+/// associator's figures and, with --compare-oracle, the oracle's.
+nlohmann::json summary_entry(const MultiOptions& o, const ScenarioInfo& info, const MultiRunParams& config,
+                             const char* filter_label, const Summary& main, const Summary* oracle) {
+  FilterOptions gate = config.options;
+  gate.board_gate = true;  // make_multi_target_tracker gates confirmed tracks as a board does
+  const FilterSetup setup = config.filter == MultiFilter::kImm ? imm_setup(gate) : ekf_ca_setup(gate);
+  nlohmann::json parameters = nlohmann::json::object();
+  for (const auto& [name, value] : setup.parameters) parameters[name] = value;
+  if (config.gate_tentative.has_value()) parameters["gate_tentative"] = gate_probability(*config.gate_tentative);
+  nlohmann::json entry = {{"kind", sensor_kind_name(hal::FrameKind::kRadar)},
+                          {"scenario", info.name},
+                          {"targets", info.targets},
+                          {"filter", multi_filter_name(config.filter)},
+                          {"filter_label", filter_label},
+                          {"associator", multi_associator_name(config.associator)},
+                          {"parameters", parameters},
+                          {"runs", o.runs},
+                          {"base_seed", o.seed},
+                          {"cutoff_m", o.cutoff_m},
+                          {"order", o.order},
+                          {"persistence_steps", o.persistence_steps}};
+  entry.update(summary_json(main));
+  if (oracle != nullptr) entry["oracle"] = summary_json(*oracle);
+  return entry;
 }
 
 struct McResult {
@@ -171,12 +218,13 @@ int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRun
   std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>> sets{
       {multi_associator_name(config.associator), &main.runs}};
   McResult oracle;
+  std::optional<Summary> so;
   if (o.compare_oracle && config.associator != MultiAssociator::kOracle) {
     MultiRunParams oc = config;
     oc.associator = MultiAssociator::kOracle;
     oracle = run_mc(scenario, o, oc);
-    const Summary so = summarise(oracle.runs);
-    print_summary("oracle", so);
+    so = summarise(oracle.runs);
+    print_summary("oracle", *so);
     write_runs_csv(dir / "multi_runs.csv", o, "oracle", oracle.runs, true);
     sets.emplace_back("oracle", &oracle.runs);
     // Paired over seeds: the per-run excess of GOSPA over the oracle's,
@@ -185,12 +233,14 @@ int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRun
     for (std::size_t i = 0; i < o.runs; ++i) excess.push_back(main.runs[i].mean_gospa_m - oracle.runs[i].mean_gospa_m);
     const MeanCi e = mean_ci95(excess);
     std::printf(" GOSPA %s / oracle: %.4f; paired excess %.3f m [%.3f, %.3f], i.e. %+.1f %% [%+.1f, %+.1f] of the oracle's\n",
-                multi_associator_name(config.associator), s.gospa.mean / so.gospa.mean, e.mean, e.ci95_low,
-                e.ci95_high, 100.0 * e.mean / so.gospa.mean, 100.0 * e.ci95_low / so.gospa.mean,
-                100.0 * e.ci95_high / so.gospa.mean);
+                multi_associator_name(config.associator), s.gospa.mean / so->gospa.mean, e.mean, e.ci95_low,
+                e.ci95_high, 100.0 * e.mean / so->gospa.mean, 100.0 * e.ci95_low / so->gospa.mean,
+                100.0 * e.ci95_high / so->gospa.mean);
   }
   write_steps_csv(dir / "multi_steps.csv", info, sets);
-  std::printf("wrote %s/{multi_runs.csv, multi_steps.csv}\n", dir.c_str());
+  merge_summary_file(dir / "summary.json", info.name, multi_filter_name(config.filter),
+                     summary_entry(o, info, config, filter, s, so ? &*so : nullptr));
+  std::printf("wrote %s/{multi_runs.csv, multi_steps.csv, summary.json}\n", dir.c_str());
   if (o.plots && plot_gospa(dir / "multi_steps.csv", dir / "multi_gospa.png",
                             info.name + " / seeds " + std::to_string(o.seed) + ".." +
                                 std::to_string(o.seed + o.runs - 1))) {

@@ -14,6 +14,8 @@
 #include "montecarlo/pcl_monte_carlo.hpp"
 #include "report/output_files.hpp"
 #include "report/pcl_files.hpp"
+#include "report/summary_json.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -124,7 +126,7 @@ int cmd_pcl(const PclOptions& o) {
   write_pcl_run_csvs(dir, scenario, mc.first_run, mc.first_output, config.tolerance);
   nlohmann::json summary = pcl_summary_json(scenario, params, config, s);
   summary["parameters"] = pcl_parameters(params);  // every key, as the run used it
-  write_json_file(dir / "pcl_summary.json", summary);
+  merge_summary_file(dir / "summary.json", scenario.name, std::string(kPclFilterName), summary);
   bool plotted = false;
   if (o.plots) {
     plotted = plot_pcl(dir, scenario.name + " / PCL KF, " + std::string(policy_name(kAssociatorNames, config.policies.associator)) +
@@ -159,7 +161,7 @@ int cmd_pcl(const PclOptions& o) {
               static_cast<unsigned long long>(s.timing.median_ns), static_cast<unsigned long long>(s.timing.p99_ns),
               static_cast<unsigned long long>(s.timing.max_ns), s.timing.mean_ns, s.timing.steps, o.jobs,
               o.jobs == 1 ? "" : "s");
-  std::printf("wrote %s/{pcl_runs.csv, pcl_truth.csv, pcl_candidates.csv, pcl_tracks.csv, pcl_summary.json%s}\n",
+  std::printf("wrote %s/{pcl_runs.csv, pcl_truth.csv, pcl_candidates.csv, pcl_tracks.csv, summary.json%s}\n",
               dir.c_str(), plotted ? ", pcl_range_doppler.png" : "");
   return 0;
 }

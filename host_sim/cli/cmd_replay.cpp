@@ -178,7 +178,7 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
     config.policies = policies;
     config.tolerance = tolerance;
     r.entry.update(metric_fields(pcl_summary_json(sc, params, config, summarise_pcl({m}, budget_ns)),
-                                 {"schema", "scenario", "tracker", "runs", "base_seed", "step_ns", "frames_refused"}));
+                                 {"kind", "scenario", "tracker", "runs", "base_seed", "step_ns", "frames_refused"}));
     r.entry["truth_frames"] = truth_match_json(score->match);
     r.entry["target_tracks"] = m.target_tracks;
     r.entry["confirmed_tracks"] = m.confirmed_tracks;
@@ -233,7 +233,7 @@ OtherKindResult replay_sonar(std::vector<std::uint8_t> bytes, const std::string&
     config.runs = 1;
     config.budget_ns = budget_ns;
     r.entry.update(metric_fields(sonar_summary_json(sc, params, config, summarise_sonar({m}, budget_ns)),
-                                 {"schema", "scenario", "tracker", "runs", "seeds", "per_step", "timing_ns",
+                                 {"kind", "scenario", "tracker", "runs", "seeds", "per_step", "timing_ns",
                                   "frames_refused", "depth_reflections"}));
     r.entry["truth_frames"] = truth_match_json(score.match);
     r.entry["scored_frames"] = m.scored_frames;

@@ -16,6 +16,8 @@
 #include "metrics/sonar_metrics.hpp"
 #include "report/output_files.hpp"
 #include "report/sonar_files.hpp"
+#include "report/summary_json.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -81,7 +83,7 @@ int run_single(const SonarOptions& o) {
   write_sonar_run_csvs(dir, mc.first_run, mc.first_output);
   nlohmann::json summary = sonar_summary_json(scenario, params, config, s);
   summary["parameters"] = sonar_parameters(params);  // every key, as the run used it
-  write_json_file(dir / "sonar_summary.json", summary);
+  merge_summary_file(dir / "summary.json", scenario.name, std::string(kSonarFilterName), summary);
   const bool plotted =
       o.plots &&
       plot_sonar(dir, scenario.name + " / sonar EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
@@ -112,7 +114,7 @@ int run_single(const SonarOptions& o) {
               static_cast<unsigned long long>(s.timing.max_ns), s.timing.mean_ns, s.timing.steps, o.jobs,
               o.jobs == 1 ? "" : "s");
   std::printf("wrote %s/{sonar_runs.csv, sonar_steps.csv, sonar_truth.csv, sonar_arrivals.csv, sonar_track.csv, "
-              "sonar_summary.json%s}\n",
+              "summary.json%s}\n",
               dir.c_str(), plotted ? ", sonar_track.png, sonar_error.png, sonar_sound_speed.png" : "");
   return 0;
 }
@@ -151,7 +153,7 @@ int run_study(const SonarOptions& o) {
       write_sonar_steps_csv(sub / "sonar_steps.csv", s);
       write_sonar_run_csvs(sub, mc.first_run, mc.first_output);
       const nlohmann::json j = sonar_summary_json(scenario, params, config, s);
-      write_json_file(sub / "sonar_summary.json", j);
+      merge_summary_file(sub / "summary.json", scenario.name, std::string(kSonarFilterName), j);
       if (o.plots && g.per_channel && g.k == 3.0) {
         plot_sonar(sub, scenario.name + " / sonar EKF, " + gate_label(params) + " / seed " + std::to_string(o.seed));
       }

@@ -98,7 +98,9 @@ def plot_run(plt, args):
 def plot_summary(plt, args):
     with open(args.summary) as f:
         doc = json.load(f)
-    entries = [(s, fl, e) for s, per in doc.get("results", {}).items() for fl, e in per.items()]
+    # Entries with an RMSE (single-target radar); PCL, sonar and
+    # multi-target runs into the same directory add entries of their own.
+    entries = [(s, fl, e) for s, per in doc.get("results", {}).items() for fl, e in per.items() if "rmse_m" in e]
     if not entries:
         print(f"warning: {args.summary} holds no results; no plot", file=sys.stderr)
         return

@@ -52,15 +52,20 @@ def main():
     track = [r for r in rows(os.path.join(a.dir, "sonar_track.csv")) if r["reported"] == "1"]
     arrivals = rows(os.path.join(a.dir, "sonar_arrivals.csv"))
     steps = rows(os.path.join(a.dir, "sonar_steps.csv"))
-    summary_path = os.path.join(a.dir, "sonar_summary.json")
+    summary_path = os.path.join(a.dir, "summary.json")
     beacons = []
     seabed = math.nan
     if os.path.exists(summary_path):
         import json
         with open(summary_path) as f:
-            s = json.load(f)
-        beacons = s["scenario"]["beacons_m"]
-        seabed = s["scenario"]["seabed_depth_m"]
+            results = json.load(f).get("results", {})
+        # The sonar entry: results[<scenario>]["sonar-ekf"].
+        for entries in results.values():
+            s = entries.get("sonar-ekf")
+            if s is not None:
+                beacons = s["scenario"]["beacons_m"]
+                seabed = s["scenario"]["seabed_depth_m"]
+                break
 
     tt = col(truth, "time_s")
     tx, ty, tz, tc = col(truth, "x_m"), col(truth, "y_m"), col(truth, "z_m"), col(truth, "c_mps")

@@ -5,11 +5,14 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "kestrel/version.hpp"
 #include "report/output_files.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim {
 
@@ -80,8 +83,20 @@ void mc001_section(std::ostream& out, const std::filesystem::path& root, const M
   figures(out, r.mc001_figures);
 }
 
+/// The entry of `filter` in a summary.json of one scenario (results[*][filter]).
+nlohmann::json summary_entry_of(const std::filesystem::path& path, std::string_view filter) {
+  const nlohmann::json j = read_json(path);
+  const std::string key(filter);
+  if (j.contains("results") && j["results"].is_object()) {
+    for (const auto& entries : j["results"]) {
+      if (entries.is_object() && entries.contains(key)) return entries[key];
+    }
+  }
+  throw std::runtime_error(path.string() + ": no '" + std::string(filter) + "' entry");
+}
+
 void pcl_section(std::ostream& out, const std::filesystem::path& root, const MainReport& r) {
-  const nlohmann::json j = read_json(root / r.pcl_dir / "pcl_summary.json");
+  const nlohmann::json j = summary_entry_of(root / r.pcl_dir / "summary.json", kPclFilterName);
   const nlohmann::json& t = j["tracker"];
   out << "## Paper 002: passive bistatic radar, range and range-rate tracking (PCL-002)\n\n"
       << "Range and range-rate Kalman filter tracking in a bistatic environment. "
@@ -94,12 +109,12 @@ void pcl_section(std::ostream& out, const std::filesystem::path& root, const Mai
       << interval(j, "coverage_after_confirmation", "%.4f") << " | "
       << interval(j, "false_confirmed_tracks_per_run", "%.3f") << " | " << interval(j, "rb_rmse_m", "%.2f")
       << " | " << interval(j, "drb_rmse_mps", "%.2f") << " | " << interval(j, "time_to_first_confirmation_s", "%.2f")
-      << " |\n\nFiles: `" << r.pcl_dir << "/pcl_{runs,truth,candidates,tracks}.csv`, `pcl_summary.json`.\n\n";
+      << " |\n\nFiles: `" << r.pcl_dir << "/pcl_{runs,truth,candidates,tracks}.csv`, `summary.json`.\n\n";
   figures(out, r.pcl_figures);
 }
 
 void sonar_section(std::ostream& out, const std::filesystem::path& root, const MainReport& r) {
-  const nlohmann::json j = read_json(root / r.sonar_dir / "sonar_summary.json");
+  const nlohmann::json j = summary_entry_of(root / r.sonar_dir / "summary.json", kSonarFilterName);
   out << "## Paper 003: underwater multipath TOA tracking (UW-003)\n\n"
       << "\"A Study on Real-time Target Tracking Algorithm for Multipath Underwater Acoustic Signals Using "
          "Extended Kalman Filter\". "
@@ -110,7 +125,7 @@ void sonar_section(std::ostream& out, const std::filesystem::path& root, const M
       << "| " << interval(j, "rmse_3d_m", "%.2f") << " | " << interval(j, "rmse_h_m", "%.2f") << " | "
       << interval(j, "rmse_depth_m", "%.2f") << " | " << interval(j, "peak_3d_m", "%.1f") << " | "
       << interval(j, "nees", "%.2f") << " | " << j["reinitialisations"].dump() << " |\n\n"
-      << "Files: `" << r.sonar_dir << "/sonar_{runs,steps,truth,arrivals,track}.csv`, `sonar_summary.json`.\n\n";
+      << "Files: `" << r.sonar_dir << "/sonar_{runs,steps,truth,arrivals,track}.csv`, `summary.json`.\n\n";
   figures(out, r.sonar_figures);
 }
 

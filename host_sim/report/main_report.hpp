@@ -35,7 +35,7 @@ struct MainReport {
 };
 
 /// Write `path` (markdown) from `report` and the summaries the parts wrote
-/// under `root` (pcl_summary.json, sonar_summary.json, mc001_table.md).
+/// under `root` (the PCL and sonar parts' summary.json, mc001_table.md).
 void write_main_report(const std::filesystem::path& path, const std::filesystem::path& root,
                        const MainReport& report);
 

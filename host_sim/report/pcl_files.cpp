@@ -10,6 +10,7 @@
 #include "kestrel/models/measurement/bistatic_range_rate.hpp"
 #include "plots/plot_runner.hpp"
 #include "report/output_files.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim {
 
@@ -138,7 +139,7 @@ nlohmann::json pcl_tracker_json(const PclTrackerParams& p, const TrackerPolicies
 nlohmann::json pcl_summary_json(const PclScenarioParams& sc, const PclTrackerParams& p, const PclMonteCarloParams& c,
                                 const PclSummary& s) {
   return {
-      {"schema", "kestrel-sim-pcl-summary/1"},
+      {"kind", sensor_kind_name(hal::FrameKind::kPcl)},
       {"scenario", pcl_scenario_json(sc)},
       {"tracker", pcl_tracker_json(p, c.policies)},
       {"runs", s.runs},

@@ -8,9 +8,10 @@
 //                       adapter kept it, and the confirmed track that took it;
 //   pcl_tracks.csv      run 0: every confirmed track per frame: estimate,
 //                       covariance, prediction, NIS, test ratio, on-target;
-//   pcl_summary.json    the Monte Carlo figures with their 95 % intervals,
-//                       the scenario and tracker settings (schema
-//                       "kestrel-sim-pcl-summary/1"; NaN is written as null);
+//   summary.json        results[<scenario>]["pcl-kf"]: the Monte Carlo figures
+//                       with their 95 % intervals, the scenario and tracker
+//                       settings, "kind": "PCL" (report/summary_json.hpp's
+//                       file; NaN is written as null);
 //   pcl_range_doppler.png  run 0 as in paper 002's figure 2 (plots/pcl_plots.py).
 #pragma once
 
@@ -38,7 +39,7 @@ void write_pcl_tracks_csv(const std::filesystem::path& path, const std::vector<P
                           const std::vector<double>& time_s, double lambda_m, const std::vector<PclTruth>* truth,
                           const PclTolerance& tolerance);
 
-/// The "scenario" (sensor) and "tracker" objects of pcl_summary.json.
+/// The "scenario" (sensor) and "tracker" objects of a PCL summary entry.
 nlohmann::json pcl_scenario_json(const PclScenarioParams& scenario);
 nlohmann::json pcl_tracker_json(const PclTrackerParams& params, const TrackerPolicies& policies);
 

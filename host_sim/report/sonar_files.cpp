@@ -7,6 +7,7 @@
 #include "csv/sensor_truth_csv.hpp"
 #include "plots/plot_runner.hpp"
 #include "report/output_files.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim {
 
@@ -138,7 +139,7 @@ nlohmann::json sonar_scenario_json(const SonarScenarioParams& sc) {
 nlohmann::json sonar_summary_json(const SonarScenarioParams& sc, const SonarTrackerParams& params,
                                   const SonarMonteCarloParams& config, const SonarSummary& s) {
   nlohmann::json j;
-  j["schema"] = "kestrel-sim-sonar-summary/1";
+  j["kind"] = sensor_kind_name(hal::FrameKind::kSonar);
   j["scenario"] = sonar_scenario_json(sc);
   j["tracker"] = sonar_params_json(params);
   j["runs"] = s.runs;

@@ -9,9 +9,10 @@
 //                     time, outlier delay) and what the tracker did with it;
 //   sonar_track.csv      run 0: the estimate and its sigmas per frame, fused and
 //                     gated counts, NIS, whether the frame was a fix;
-//   sonar_summary.json   the Monte Carlo figures with their 95 % intervals, the
-//                     scenario and tracker settings (schema
-//                     "kestrel-sim-sonar-summary/1"; NaN is written as null);
+//   summary.json         results[<scenario>]["sonar-ekf"]: the Monte Carlo
+//                     figures with their 95 % intervals, the scenario and
+//                     tracker settings, "kind": "sonar" (report/summary_json.hpp's
+//                     file; NaN is written as null);
 //   sonar_track.png, sonar_error.png, sonar_sound_speed.png  the paper's figures 1-3
 //                     (plots/sonar_plots.py).
 #pragma once
@@ -37,7 +38,7 @@ void write_sonar_run_csvs(const std::filesystem::path& dir, const SonarScenarioR
 void write_sonar_track_csv(const std::filesystem::path& path, const std::vector<SonarFrameOutcome>& frames,
                         const std::vector<double>& time_s);
 
-/// The "scenario" object of sonar_summary.json (the installation and noise).
+/// The "scenario" object of a sonar summary entry (the installation and noise).
 nlohmann::json sonar_scenario_json(const SonarScenarioParams& scenario);
 nlohmann::json sonar_params_json(const SonarTrackerParams& params);
 nlohmann::json sonar_summary_json(const SonarScenarioParams& scenario, const SonarTrackerParams& params,

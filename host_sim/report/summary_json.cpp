@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "report/output_files.hpp"
+#include "scenarios/sensor_kind.hpp"
 
 namespace kestrel::sim {
 
@@ -49,6 +50,7 @@ nlohmann::json summary_entry(const EntryContext& c, const MonteCarloSummary& s) 
   nlohmann::json parameters = nlohmann::json::object();
   for (const auto& [name, value] : c.setup.parameters) parameters[name] = value;
   nlohmann::json entry = summary_metrics(s);
+  entry["kind"] = sensor_kind_name(hal::FrameKind::kRadar);
   entry["scenario"] = c.scenario;
   entry["filter"] = c.filter;
   entry["filter_label"] = c.setup.label;

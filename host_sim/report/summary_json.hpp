@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// summary.json: the machine-readable result of `run`, `replay` and `suite`.
+// summary.json: the machine-readable result of `run`, `replay`, `suite`,
+// `pcl`, `sonar` and `multi`, one schema for every kind:
 //   { "schema": "kestrel-sim-summary/1",
-//     "results": { "<scenario>": { "<filter>": { ...entry... } } } }
-// An entry holds rmse_m, peak_m, nees_pos, nis, track_loss_s, recovery_s
-// (each {mean, ci95_low, ci95_high, n}), runs, runs_without_loss, step_ns
+//     "results": { "<scenario>": { "<filter>": { "kind": ..., ...entry... } } } }
+// "kind" is the frames' kind (radar, PCL, sonar); a PCL, sonar or
+// multi-target entry holds its own figures (report/pcl_files.hpp,
+// report/sonar_files.hpp, cli/cmd_multi.cpp). A single-target radar entry
+// holds rmse_m, peak_m, nees_pos, nis, track_loss_s, recovery_s (each
+// {mean, ci95_low, ci95_high, n}), runs, runs_without_loss, step_ns
 // {min, median, p99, max, mean, steps, budget_ns, overruns}, and the
 // settings that produced it. NaN (a figure with no data, e.g. recovery
 // when no run lost the track) is written as null.
