@@ -223,6 +223,9 @@ int main(int argc, char** argv) {
   timing.filter.filter_given = timing_cmd->count("--filter") > 0;
   timing.filter.radar_only_given =
       given_options(timing_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm"});
+  sweep.filter.filter_given = sweep_cmd->count("--filter") > 0;
+  sweep.filter.radar_only_given =
+      given_options(sweep_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm"});
   replay.filter.filter_given = replay_cmd->count("--filter") > 0;
   // --config and --set take the keys of the stream's kind (cmd_replay).
   replay.filter.radar_only_given = given_options(

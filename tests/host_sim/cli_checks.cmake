@@ -360,6 +360,41 @@ elseif(CHECK STREQUAL "one_summary")
   if(NOT targets EQUAL 2 OR NOT associator STREQUAL "gnn")
     message(FATAL_ERROR "results.crossing.ekf-ca: targets ${targets}, associator ${associator}")
   endif()
+elseif(CHECK STREQUAL "sweep_kinds")
+  # sweep takes a PCL, sonar or multi-target scenario too: one run per
+  # value, each value's summary entry with its swept value in one file; a
+  # radar-only option or a value out of range is refused with nothing run.
+  foreach(args "pcl002;pcl-kf;accel_sigma_mps2;2;4;-s;pcl002;--set;accel_sigma_mps2=2,4"
+               "crossing;imm;imm.p_stay;0.8;0.95;-s;crossing;-f;imm;--set;imm.p_stay=0.8,0.95")
+    list(POP_FRONT args scenario filter key v1 v2)
+    execute_process(COMMAND ${SIM} sweep ${args} --runs 1 --out ${OUT}/${scenario}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      message(FATAL_ERROR "sweep ${args} failed (${rc}):\n${out}${err}")
+    endif()
+    file(READ ${OUT}/${scenario}/summary.json summary)
+    foreach(v ${v1} ${v2})
+      string(JSON value GET "${summary}" results ${scenario} ${filter}-${key}${v} sweep value)
+      string(JSON runs GET "${summary}" results ${scenario} ${filter}-${key}${v} runs)
+      if(NOT value EQUAL v OR NOT runs EQUAL 1)
+        message(FATAL_ERROR "sweep ${args}: entry ${filter}-${key}${v} has value ${value}, runs ${runs}")
+      endif()
+    endforeach()
+  endforeach()
+  string(JSON a GET "${summary}" results crossing imm-imm.p_stay0.8 gospa_m mean)
+  string(JSON b GET "${summary}" results crossing imm-imm.p_stay0.95 gospa_m mean)
+  if(a STREQUAL b)
+    message(FATAL_ERROR "sweep of imm.p_stay: the same GOSPA ${a} for both values")
+  endif()
+  foreach(bad "--qj set the radar filters and do not apply;--set;gate_k_sigma=2,3;--qj;5"
+              "--set gate_k_sigma=-3: out of range;--set;gate_k_sigma=2,-3")
+    list(POP_FRONT bad pattern)
+    execute_process(COMMAND ${SIM} sweep -s uw003 ${bad} --runs 1 --out ${OUT}/bad
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(rc EQUAL 0 OR NOT err MATCHES "${pattern}" OR EXISTS ${OUT}/bad)
+      message(FATAL_ERROR "sweep -s uw003 ${bad} was not refused before running (${rc}):\n${out}${err}")
+    endif()
+  endforeach()
 elseif(CHECK STREQUAL "suite_report")
   # The main job at tiny run counts: every part runs and report.md holds the
   # table of each paper's system.
