@@ -288,6 +288,27 @@ int cmd_multi(const MultiOptions& o) {
   return report_multi(o, *scenario, multi_params(o, scenario->info(), options));
 }
 
+std::vector<std::uint64_t> multi_target_step_times(const TimingOptions& t, std::string& what) {
+  const auto scenario = make_scenario(t.scenario);
+  MultiOptions o;
+  o.scenario = t.scenario;
+  o.runs = t.runs;
+  o.seed = t.seed;
+  o.filter = t.filter.filter;
+  o.budget_us = t.filter.budget_us;
+  const MultiRunParams config = multi_params(o, scenario->info(), t.filter.options);
+  std::vector<std::uint64_t> step_ns;
+  for (std::size_t i = 0; i < o.runs; ++i) {
+    const MultiRunDetail d = run_multi_once(*scenario, o.seed + i, config);
+    for (const FrameOutcome& f : d.stream.frames) {
+      if (f.stepped) step_ns.push_back(f.step_ns);
+    }
+  }
+  what = scenario->info().name + " / multi-target tracker (" + multi_filter_name(config.filter) + ", " +
+         multi_associator_name(config.associator) + "), " + std::to_string(o.runs) + " runs";
+  return step_ns;
+}
+
 int run_multi_target_scenario(const RunOptions& r) {
   if (!r.asterix_out.path.empty()) {
     throw std::invalid_argument("--asterix-out: a run of a multi-target scenario writes no CAT062");

@@ -165,6 +165,11 @@ struct TimingOptions {
   std::string worst_case;  ///< --worst-case: a board's worst-case frame instead of a scenario.
 };
 int cmd_timing(const TimingOptions& o);
+/// timing of a multi-target scenario: the step times (adapter + step, ns,
+/// every stepped frame) of the tracker `run` and `multi` use for it (GNN,
+/// kMultiMaxTracks tracks) over o.runs seeds, one job; `what` names it.
+/// cli/cmd_multi.cpp.
+std::vector<std::uint64_t> multi_target_step_times(const TimingOptions& o, std::string& what);
 /// The worst-case frame of `board` (cortex-m4f, cortex-m7, cortex-m0plus,
 /// riscv64-linux or host), adapter + step timed `reps` times per counted frame.
 int cmd_timing_worst_case(const std::string& board, std::size_t reps);
