@@ -107,6 +107,39 @@ TEMPLATE_TEST_CASE("Scenario: fixed-point + - * / are exact or correctly rounded
       CHECK((Q::from_raw(-3) / Q(2)).raw() == -2);
     }
   }
+  GIVEN("sums and differences at the edges of + and -'s unchecked path (|raw| near 2^61) and of the range") {
+    constexpr std::int64_t k61 = std::int64_t{1} << 61;
+    constexpr std::int64_t k62 = std::int64_t{1} << 62;
+    const std::int64_t edges[] = {-k61 - 1,        -k61,        -k61 + 1,    k61 - 1,      k61,
+                                  -k62 - 1,        -k62,        -k62 + 1,    -k62 + 2,     k62 - 2,
+                                  k62 - 1,         k62,         k62 + 1,     -kMaxFinite,  kMaxFinite,
+                                  -kMaxFinite + 1, kMaxFinite - 1, 0,        -1,           1};
+    int mismatches = 0;
+    int overflows = 0;
+    kestrel::reset_fixed_point_overflow_count();
+    for (const std::int64_t x : edges) {
+      for (const std::int64_t y : edges) {
+        for (const bool subtract : {false, true}) {
+          const Q got = subtract ? Q::from_raw(x) - Q::from_raw(y) : Q::from_raw(x) + Q::from_raw(y);
+          const I128 want = subtract ? I128{x} - I128{y} : I128{x} + I128{y};
+          if (fits(want)) {
+            mismatches += got.raw() != static_cast<std::int64_t>(want) ? 1 : 0;
+          } else {
+            ++overflows;
+            mismatches += got.is_finite() || ((got.raw() < 0) != (want < 0)) ? 1 : 0;
+          }
+        }
+      }
+    }
+    THEN("each equals the reference or saturates with the right sign, and each saturation is counted") {
+      // -2^62 + -2^62 = INT64_MIN and -2^62 + (-2^62 + 1) = -saturation's raw
+      // value: both must saturate, counted, like any other overflow.
+      CHECK((Q::from_raw(-k62) + Q::from_raw(-k62)).raw() == -INT64_MAX);
+      CHECK(mismatches == 0);
+      CHECK(overflows > 0);
+      CHECK(kestrel::fixed_point_overflow_count() == static_cast<std::uint32_t>(overflows) + 1);
+    }
+  }
 }
 
 SCENARIO("the 16-bit-limb 32 x 32-bit product (Thumb-1) equals the native one", "[fixed_point]") {

@@ -415,9 +415,9 @@ class FixedPoint {
   // ---- arithmetic: one correctly rounded result per operation --------------
 
   friend constexpr FixedPoint operator+(FixedPoint a, FixedPoint b) {
-    // The common case first: both below 2^62 (so finite), whose sum stays
-    // inside the finite range.
-    if (below_2_62(a.raw_, b.raw_)) {
+    // The common case first: both in [-2^61, 2^61), whose sum is in
+    // [-2^62, 2^62) and so finite: no check after the add.
+    if (below_2_61(a.raw_, b.raw_)) {
       return from_raw(static_cast<Raw>(static_cast<std::uint64_t>(a.raw_) + static_cast<std::uint64_t>(b.raw_)));
     }
     if (!a.is_finite() || !b.is_finite()) return propagate_add(a, b);
@@ -520,13 +520,25 @@ class FixedPoint {
     return detail::to_raw_saturating(detail::round_shift_by<kFracBits>(p), negative);
   }
 
-  /// Whether both raw magnitudes are below 2^62 (bits 63 and 62 equal in
+  /// Whether both raw values are in [-2^62, 2^62) (bits 63 and 62 equal in
   /// each), which makes both finite: one test on the high words instead of
-  /// four 64-bit comparisons (a 32-bit core's + and * check it first).
+  /// four 64-bit comparisons (a 32-bit core's * checks it first).
   static constexpr bool below_2_62(Raw a, Raw b) {
     const auto ha = static_cast<std::uint32_t>(static_cast<std::uint64_t>(a) >> 32);
     const auto hb = static_cast<std::uint32_t>(static_cast<std::uint64_t>(b) >> 32);
     return (((ha ^ (ha << 1)) | (hb ^ (hb << 1))) >> 31) == 0;
+  }
+
+  /// Whether both raw values are in [-2^61, 2^61) (bits 63, 62 and 61 equal
+  /// in each), which keeps their sum finite: + checks it first. (Within
+  /// 2^62, -2^62 + -2^62 would be INT64_MIN.)
+  static constexpr bool below_2_61(Raw a, Raw b) {
+    const auto ha = static_cast<std::uint32_t>(static_cast<std::uint64_t>(a) >> 32);
+    const auto hb = static_cast<std::uint32_t>(static_cast<std::uint64_t>(b) >> 32);
+    // Flipped by its own sign, a high word is below 2^29 iff bits 31..29 were equal.
+    const std::uint32_t ma = ha ^ static_cast<std::uint32_t>(static_cast<std::int32_t>(ha) >> 31);
+    const std::uint32_t mb = hb ^ static_cast<std::uint32_t>(static_cast<std::int32_t>(hb) >> 31);
+    return ((ma | mb) >> 29) == 0;
   }
 
   /// Sum where an operand is saturated: saturation sticks (opposite signs,
