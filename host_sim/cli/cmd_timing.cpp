@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim timing`: per-step latency of the real-time loop on the host
 // (docs/tracking.md), for a radar scenario and filter (a multi-target one:
-// the tracker `run` uses for it) or the PCL or sonar tracker on its scenario. Runs one job at a time so runs do not
-// compete for the cores; every step of every run enters the distribution.
+// the tracker `run` uses for it) or the PCL or sonar tracker on its
+// scenario. Runs one job at a time so runs do not compete for the cores;
+// every step of every run enters the distribution.
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
