@@ -34,7 +34,6 @@ namespace kestrel::sim {
 
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// Paper 000 table 2 (their geometry; only the ratios compare).
 struct PaperRow {
