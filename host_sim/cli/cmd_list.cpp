@@ -53,16 +53,17 @@ int cmd_list(bool settings) {
   std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor; "
               "timing):\n ");
   for (const std::string& n : pcl_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the PCL tracker (keys: list --settings; with `pcl`: --associator nn|gnn|pda, "
-              "--manager m-of-n|score)\n",
+  std::printf("\n  filter %s: the PCL tracker (keys: list --settings; run and pcl: --associator nn|gnn|pda, "
+              "--manager m-of-n|score, --gate-tentative)\n",
               std::string(kPclFilterName).c_str());
   std::printf("sonar scenarios (run, sonar, generate; replay --stream of their streams, --scenario picks the "
               "installation; timing):\n ");
   for (const std::string& n : sonar_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; its other options on `sonar`)\n",
+  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; `sonar --study`: the gate study)\n",
               std::string(kSonarFilterName).c_str());
   std::printf("multi-target radar scenarios (crossing, raid, formation-split above): run or multi, with ekf-ca or "
-              "imm, scored as `multi` scores them (OSPA, GOSPA, swaps)");
+              "imm, scored as `multi` scores them (OSPA, GOSPA, swaps); run and multi: --associator nn|gnn|oracle, "
+              "--gate-tentative, --compare-oracle, --cutoff, --order, --persistence");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");
   return 0;

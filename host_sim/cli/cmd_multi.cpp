@@ -314,16 +314,16 @@ int run_multi_target_scenario(const RunOptions& r) {
     throw std::invalid_argument("--asterix-out: a run of a multi-target scenario writes no CAT062");
   }
   const auto scenario = make_scenario(r.scenario);
-  MultiOptions o;  // multi's defaults for the rest: GNN, c 500 m, p 2, swaps held 3 steps
-  o.scenario = r.scenario;
-  o.runs = r.runs;
-  o.seed = r.seed;
-  o.jobs = r.jobs;
-  o.out = r.out;
-  o.plots = r.plots;
+  MultiOptions o = options_of_run<MultiOptions>(r);
   o.filter = r.filter.filter;
-  o.budget_us = r.filter.budget_us;
-  // main() has resolved --config, --set and the options of their own.
+  o.associator = r.kind.associator;
+  o.gate_tentative = r.kind.gate_tentative;
+  o.compare_oracle = r.kind.compare_oracle;
+  o.cutoff_m = r.kind.cutoff_m;
+  o.order = r.kind.order;
+  o.persistence_steps = r.kind.persistence_steps;
+  // main() has resolved --config, --set and the options of their own into
+  // r.filter.options (o.config and o.sets are not read again).
   return report_multi(o, *scenario, multi_params(o, scenario->info(), r.filter.options));
 }
 

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // `kestrel-sim run`: one scenario, one filter, N seeds. A PCL or sonar
 // scenario runs the Monte Carlo of `kestrel-sim pcl` / `sonar`, a
-// multi-target one that of `multi` (the same code).
+// multi-target one that of `multi` (the same code), with their own options
+// (KindOptions) where the kind takes them.
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/cmd_pcl.hpp"
 #include "cli/cmd_sonar.hpp"
@@ -59,32 +62,39 @@ void check_filter_fits(const FilterChoice& f, hal::FrameKind kind, const std::st
   if (kind != hal::FrameKind::kRadar && !f.radar_only_given.empty()) {
     throw std::invalid_argument(what + "; " + join_names(f.radar_only_given) +
                                 " set the radar filters and do not apply (the " + kind_name +
-                                " tracker's keys: `--set` / `--config`, `list --settings`; its other options: "
-                                "`kestrel-sim " + (kind == hal::FrameKind::kPcl ? "pcl" : "sonar") + "`)");
+                                " tracker's keys: `--set` / `--config`, `list --settings`)");
   }
 }
 
 namespace {
-/// run's options as `pcl`'s or `sonar`'s (their fields share the names).
-template <class Options>
-Options sensor_options(const RunOptions& o) {
-  Options s;
-  s.scenario = o.scenario;
-  s.runs = o.runs;
-  s.seed = o.seed;
-  s.jobs = o.jobs;
-  s.out = o.out;
-  s.plots = o.plots;
-  s.budget_us = o.filter.budget_us;
-  s.config = o.filter.config;
-  s.sets = o.filter.sets;
-  return s;
+/// Throws naming the options of KindOptions given that `allowed` does not
+/// hold: `what` says which kind of scenario it is.
+void check_kind_options(const KindOptions& k, const std::vector<std::string>& allowed, const std::string& what) {
+  std::vector<std::string> wrong;
+  for (const std::string& g : k.given) {
+    if (std::find(allowed.begin(), allowed.end(), g) == allowed.end()) wrong.push_back(g);
+  }
+  if (wrong.empty()) return;
+  const std::string verb = wrong.size() == 1 ? " does not apply to it" : " do not apply to it";
+  throw std::invalid_argument(what + "; " + join_names(wrong) + verb +
+                              (allowed.empty() ? std::string() : " (it takes " + join_names(allowed) + ")"));
 }
 }  // namespace
 
 int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind) {
-  if (kind == hal::FrameKind::kPcl) return cmd_pcl(sensor_options<PclOptions>(o));
-  if (kind == hal::FrameKind::kSonar) return cmd_sonar(sensor_options<SonarOptions>(o));
+  const std::string what = "scenario '" + o.scenario + "' is a " + sensor_kind_name(kind) + " scenario";
+  if (kind == hal::FrameKind::kPcl) {
+    check_kind_options(o.kind, {"--associator", "--manager", "--gate-tentative"}, what);
+    PclOptions p = options_of_run<PclOptions>(o);
+    if (!o.kind.associator.empty()) p.associator = o.kind.associator;
+    if (!o.kind.manager.empty()) p.manager = o.kind.manager;
+    p.gate_tentative = o.kind.gate_tentative;
+    return cmd_pcl(p);
+  }
+  if (kind == hal::FrameKind::kSonar) {
+    check_kind_options(o.kind, {}, what);
+    return cmd_sonar(options_of_run<SonarOptions>(o));
+  }
   throw std::invalid_argument("scenario '" + o.scenario + "' is a radar scenario: `run` runs it with a radar filter");
 }
 
@@ -98,7 +108,13 @@ int cmd_run(const RunOptions& o) {
   if (kind.has_value()) check_filter_fits(o.filter, *kind, "scenario '" + o.scenario + "' is a radar scenario");
   const auto made = make_scenario(o.scenario);
   // Several targets: multi's runs and scoring (OSPA, GOSPA, swaps), not RMSE.
-  if (made->info().targets > 1) return run_multi_target_scenario(o);
+  if (made->info().targets > 1) {
+    check_kind_options(o.kind,
+                       {"--associator", "--gate-tentative", "--compare-oracle", "--cutoff", "--order", "--persistence"},
+                       "scenario '" + o.scenario + "' is a multi-target radar scenario");
+    return run_multi_target_scenario(o);
+  }
+  check_kind_options(o.kind, {}, "scenario '" + o.scenario + "' is a single-target radar scenario");
   const MonteCarloParams config = config_from(o.filter, o.runs, o.seed, o.jobs);
   const std::string scenario = made->info().name;
   const std::filesystem::path dir = o.out.empty() ? std::filesystem::path("results") / scenario : std::filesystem::path(o.out);

@@ -70,9 +70,23 @@ struct Cat062Output {
 };
 int cmd_generate(const GenerateOptions& o);
 
+/// `run`'s options for some scenario kinds only (the rest of `pcl`'s and
+/// `multi`'s); given for a scenario they do not apply to, they are an error.
+struct KindOptions {
+  std::string associator;  ///< PCL: nn, gnn or pda (nn); several radar targets: nn, gnn or oracle (gnn).
+  std::string manager;     ///< PCL: m-of-n or score (m-of-n).
+  std::optional<double> gate_tentative;  ///< PCL, several targets: 0.90, 0.95, 0.99, 0.995 or 0.999.
+  bool compare_oracle = false;           ///< Several targets: the oracle associator on the same seeds too.
+  double cutoff_m = 500.0;               ///< Several targets: OSPA/GOSPA cut-off c.
+  double order = 2.0;                    ///< Several targets: OSPA/GOSPA order p.
+  std::size_t persistence_steps = 3;     ///< Several targets: steps a swap must hold.
+  std::vector<std::string> given;        ///< Which of these the command line gave (as spelt there).
+};
+
 struct RunOptions {
   std::string scenario;
   FilterChoice filter;
+  KindOptions kind;
   std::size_t runs = 20;
   std::uint64_t seed = 0;   ///< Seed of run 0; run i uses seed + i.
   unsigned jobs = 1;
@@ -82,17 +96,36 @@ struct RunOptions {
 };
 int cmd_run(const RunOptions& o);
 
+/// run's options as another command's (`pcl`, `sonar`, `multi`: their
+/// fields share the names): scenario, runs, seed, jobs, out, plots, budget,
+/// --config and --set.
+template <class Options>
+Options options_of_run(const RunOptions& o) {
+  Options s;
+  s.scenario = o.scenario;
+  s.runs = o.runs;
+  s.seed = o.seed;
+  s.jobs = o.jobs;
+  s.out = o.out;
+  s.plots = o.plots;
+  s.budget_us = o.filter.budget_us;
+  s.config = o.filter.config;
+  s.sets = o.filter.sets;
+  return s;
+}
+
 /// `run` of a PCL or sonar scenario (`kind`): the Monte Carlo, files and
 /// printout of `pcl` / `sonar` with run's scenario, runs, seed, jobs, out,
-/// plots, budget and --config/--set (the keys of filters/sensor_settings.hpp).
+/// plots, budget, --config/--set (the keys of filters/sensor_settings.hpp)
+/// and, for PCL, --associator, --manager and --gate-tentative.
 /// The one place run's options become PclOptions / SonarOptions; suite's pcl
 /// and sonar parts come through it too.
 int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind);
 
 /// `run` of a multi-target scenario (crossing, raid, formation-split): the
-/// Monte Carlo, files and printout of `multi` (its defaults: GNN, OSPA/GOSPA
-/// c 500 m, p 2) with run's scenario, runs, seed, jobs, out, plots, budget,
-/// filter (ekf-ca or imm) and resolved filter options. cli/cmd_multi.cpp.
+/// Monte Carlo, files and printout of `multi` with run's scenario, runs,
+/// seed, jobs, out, plots, budget, filter (ekf-ca or imm), resolved filter
+/// options and KindOptions. cli/cmd_multi.cpp.
 int run_multi_target_scenario(const RunOptions& o);
 
 /// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).

@@ -105,6 +105,20 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out,-o", run.out, "Output directory (default results/<scenario>)");
   run_cmd->add_flag("!--no-plots", run.plots, "Do not run the plot script");
   add_cat062_output(run_cmd, run.asterix_out);
+  // pcl's and multi's own options; each is refused for a kind it does not fit.
+  run_cmd->add_option("--associator", run.kind.associator,
+                      "PCL: nn, gnn or pda (default nn); several radar targets: nn, gnn or oracle (default gnn)");
+  run_cmd->add_option("--manager", run.kind.manager, "PCL: m-of-n (default) or score (sequential log-likelihood ratio)");
+  run_cmd->add_option("--gate-tentative", run.kind.gate_tentative,
+                      "PCL, several radar targets: gate probability of tentative tracks");
+  run_cmd->add_flag("--compare-oracle", run.kind.compare_oracle,
+                    "Several radar targets: also the oracle associator on the same seeds");
+  run_cmd->add_option("--cutoff", run.kind.cutoff_m, "Several radar targets: OSPA/GOSPA cut-off c, m")
+      ->capture_default_str();
+  run_cmd->add_option("--order", run.kind.order, "Several radar targets: OSPA/GOSPA order p")->capture_default_str();
+  run_cmd->add_option("--persistence", run.kind.persistence_steps,
+                      "Several radar targets: steps a changed assignment must hold to count as a swap")
+      ->capture_default_str();
 
   SuiteOptions suite;
   CLI::App* suite_cmd = app.add_subcommand(
@@ -214,6 +228,8 @@ int main(int argc, char** argv) {
   run.filter.radar_only_given =
       given_options(run_cmd, {"--scalar", "--qj", "--gate-d2", "--board-gate", "--robust-gate", "--imm",
                               "--asterix-out", "--sac", "--sic"});
+  run.kind.given = given_options(
+      run_cmd, {"--associator", "--manager", "--gate-tentative", "--compare-oracle", "--cutoff", "--order", "--persistence"});
   const auto is_radar = [](const std::string& scenario) {
     const std::optional<kestrel::hal::FrameKind> kind = kestrel::sim::scenario_kind(scenario);
     return !kind.has_value() || *kind == kestrel::hal::FrameKind::kRadar;

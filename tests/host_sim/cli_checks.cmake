@@ -455,6 +455,57 @@ elseif(CHECK STREQUAL "config_set")
   if(EXISTS ${OUT}/bad/summary.json)
     message(FATAL_ERROR "run --set confirm_m=9 wrote a summary")
   endif()
+elseif(CHECK STREQUAL "run_kind_options")
+  # run takes pcl's and multi's own options for the scenarios they fit, and
+  # they reach the run and its summary; for another kind each is refused by
+  # name, with nothing run.
+  execute_process(COMMAND ${SIM} run -s pcl002 --runs 2 --associator gnn --manager score --gate-tentative 0.99
+                          --no-plots --out ${OUT}/pcl
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "pcl002: 2 runs [^\n]*, gnn, track score,")
+    message(FATAL_ERROR "run -s pcl002 --associator gnn --manager score (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/pcl/summary.json summary)
+  foreach(entry "associator;gnn" "manager;score" "gate_tentative;0.99")
+    list(POP_FRONT entry key want)
+    string(JSON got GET "${summary}" results pcl002 pcl-kf tracker ${key})
+    if(NOT got STREQUAL want)
+      message(FATAL_ERROR "pcl002 summary tracker.${key} is '${got}', expected '${want}'")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${SIM} run -s crossing --runs 2 --associator nn --gate-tentative 0.99 --compare-oracle
+                          --cutoff 300 --order 1 --persistence 2 --no-plots --out ${OUT}/crossing
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "crossing: 2 targets, 2 runs [^\n]*, nn, c 300 m, p 1\n.* oracle, mean over runs")
+    message(FATAL_ERROR "run -s crossing --associator nn --compare-oracle (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/crossing/summary.json summary)
+  foreach(entry "associator;nn" "cutoff_m;300" "order;1" "persistence_steps;2" "parameters;gate_tentative;0.99")
+    list(POP_BACK entry want)
+    string(JSON got GET "${summary}" results crossing ekf-ca ${entry})
+    if(NOT got EQUAL want AND NOT got STREQUAL want)
+      message(FATAL_ERROR "crossing summary ${entry} is '${got}', expected '${want}'")
+    endif()
+  endforeach()
+  string(JSON oracle_gospa GET "${summary}" results crossing ekf-ca oracle gospa_m mean)
+  if(NOT oracle_gospa MATCHES "^[0-9]")
+    message(FATAL_ERROR "crossing summary has no oracle GOSPA ('${oracle_gospa}')")
+  endif()
+  foreach(args "s1;single-target radar;--associator;gnn;--associator does not apply to it"
+               "uw003;sonar;--manager;score;--gate-tentative;0.99;--manager, --gate-tentative do not apply to it"
+               "crossing;multi-target radar;--manager;score;--manager does not apply to it \\(it takes --associator, --gate-tentative"
+               "pcl002;PCL;--compare-oracle;--compare-oracle does not apply to it \\(it takes --associator, --manager")
+    list(POP_FRONT args scenario kind)
+    list(POP_BACK args want)
+    execute_process(COMMAND ${SIM} run -s ${scenario} --runs 1 ${args} --no-plots --out ${OUT}/refused-${scenario}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(rc EQUAL 0 OR NOT err MATCHES "scenario '${scenario}' is a ${kind} scenario; ${want}")
+      message(FATAL_ERROR "run -s ${scenario} ${args} was not refused by name (${rc}):\n${out}${err}")
+    endif()
+    if(EXISTS ${OUT}/refused-${scenario}/summary.json)
+      message(FATAL_ERROR "run -s ${scenario} ${args} wrote a summary")
+    endif()
+  endforeach()
 else()
   message(FATAL_ERROR "unknown CHECK '${CHECK}'")
 endif()
