@@ -84,7 +84,13 @@ int cmd_generate(const GenerateOptions& o) {
   for (const MeasurementFrame& f : run.frames) wire_frames.push_back(from_wire_frame(to_wire_frame(f)));
   const auto truth_path = std::filesystem::path(stream_path).replace_extension(".truth.csv");
   const auto plots_path = std::filesystem::path(stream_path).replace_extension(".plots.csv");
-  write_truth_csv(truth_path, run.truth);
+  // Several targets: every one of them, which `replay --truth` then scores
+  // as `run` scores the scenario (OSPA, GOSPA, swaps).
+  if (run.targets.size() > 1) {
+    write_targets_truth_csv(truth_path, run.targets);
+  } else {
+    write_truth_csv(truth_path, run.truth);
+  }
   write_radar_plot_csv(plots_path, wire_frames);
 
   std::printf("%s seed %llu: %zu frames, %zu bytes\n  stream %s\n  truth  %s\n  plots  %s\n",

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "cli/cmd_multi.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "pipeline/worker_pool.hpp"
 #include "plots/plot_runner.hpp"
 #include "report/output_files.hpp"
+#include "report/run_files.hpp"
 #include "report/summary_json.hpp"
 #include "scenarios/registry.hpp"
 #include "scenarios/sensor_kind.hpp"
@@ -286,6 +288,69 @@ int cmd_multi(const MultiOptions& o) {
   apply_settings(settings, options);
   if (o.qj.has_value()) options.qj = o.qj;
   return report_multi(o, *scenario, multi_params(o, scenario->info(), options));
+}
+
+std::vector<std::string> multi_target_replay_refuses(const ReplayOptions& o) {
+  static const char* const kNotForMulti[] = {"--ungated", "--loss-threshold-m", "--first-scored-step",
+                                             "--asterix-out", "--sac", "--sic"};
+  std::vector<std::string> out;
+  for (const char* n : kNotForMulti) {
+    if (std::find(o.filter.radar_only_given.begin(), o.filter.radar_only_given.end(), n) !=
+        o.filter.radar_only_given.end()) {
+      out.emplace_back(n);
+    }
+  }
+  return out;
+}
+
+int replay_multi_target(const ReplayOptions& r, const FilterChoice& filter, StreamInput input,
+                        const std::vector<std::vector<TruthSample>>& targets, const std::string& source) {
+  MultiOptions o;  // multi's defaults: GNN, c 500 m, p 2, swaps held 3 steps
+  o.runs = 1;
+  o.out = r.out;
+  o.plots = r.plots;
+  o.filter = filter.filter;
+  o.budget_us = filter.budget_us;
+  MultiRunParams config;
+  config.associator = MultiAssociator::kGlobalNearestNeighbour;
+  config.filter = multi_filter_by_name(o.filter);
+  config.options = filter.options;
+  config.spa = SpaParams{o.cutoff_m, o.order};
+  config.persistence_steps = o.persistence_steps;
+  config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  const StreamRunResult stream = run_multi_stream(config, std::move(input));
+  std::size_t without_truth = 0;
+  const std::vector<MultiTargetStep> steps = multi_target_steps_at_times(targets, stream, without_truth);
+  const std::vector<MultiTargetRunMetrics> runs{compute_multi_target_metrics(steps, config.spa, config.persistence_steps)};
+
+  ScenarioInfo info;
+  info.name = "replay";
+  info.targets = targets.size();
+  info.steps = steps.size();
+  info.frame_period_s = steps.size() > 1 ? (steps.back().t_s - steps.front().t_s) / static_cast<double>(steps.size() - 1) : 0.0;
+  const std::filesystem::path dir(o.out);
+  std::filesystem::create_directories(dir);
+  const std::string name = multi_filter_name(config.filter);
+  const std::filesystem::path tracks_csv = dir / (name + "_tracks.csv");
+  write_track_csv(tracks_csv, stream);
+  write_steps_csv(dir / "multi_steps.csv", info, {{multi_associator_name(config.associator), &runs}});
+  const Summary s = summarise(runs);
+  std::printf("replay %s: %zu targets in %s; scored %zu frames (%zu decoded frames at a time without every "
+              "target's truth), %s, %s, c %g m, p %g\n",
+              source.c_str(), targets.size(), r.truth.c_str(), steps.size(), without_truth, name.c_str(),
+              multi_associator_name(config.associator), o.cutoff_m, o.order);
+  print_summary(multi_associator_name(config.associator), s);
+  nlohmann::json entry = summary_entry(o, info, config, name.c_str(), s, nullptr);
+  entry.erase("base_seed");
+  entry["source"] = source;
+  entry["truth"] = r.truth;
+  entry["truth_frames"] = {{"matched", steps.size()}, {"without_truth", without_truth}};
+  merge_summary_file(dir / "summary.json", info.name, name, entry);
+  std::printf("wrote %s, %s/{multi_steps.csv, summary.json}\n", tracks_csv.c_str(), dir.c_str());
+  if (o.plots && plot_gospa(dir / "multi_steps.csv", dir / "multi_gospa.png", "replay " + source)) {
+    std::printf("wrote %s/multi_gospa.png\n", dir.c_str());
+  }
+  return 0;
 }
 
 std::vector<std::uint64_t> multi_target_step_times(const TimingOptions& t, std::string& what) {

@@ -119,6 +119,8 @@ struct OtherKindResult {
 struct ReplayTruth {
   hal::FrameKind kind = hal::FrameKind::kRadar;
   std::vector<TruthSample> radar;
+  /// A radar truth of several targets (its `target` column): [i] target i.
+  std::vector<std::vector<TruthSample>> radar_targets;
   std::vector<PclTruthRow> pcl;
   std::vector<SonarTruthRow> sonar;
   std::vector<double> times_s;
@@ -362,8 +364,13 @@ ReplayTruth read_replay_truth(const std::string& path, hal::FrameKind stream_kin
       for (const SonarTruthRow& r : t.sonar) t.times_s.push_back(r.truth.t_s);
       break;
     default:
-      t.radar = read_truth_csv(std::filesystem::path(path));
-      for (const TruthSample& r : t.radar) t.times_s.push_back(r.t_s);
+      if (truth_csv_has_targets(path)) {
+        t.radar_targets = read_targets_truth_csv(path);
+        for (const TruthSample& r : t.radar_targets.front()) t.times_s.push_back(r.t_s);
+      } else {
+        t.radar = read_truth_csv(std::filesystem::path(path));
+        for (const TruthSample& r : t.radar) t.times_s.push_back(r.t_s);
+      }
       break;
   }
   return t;
@@ -474,6 +481,17 @@ int cmd_replay(const ReplayOptions& o) {
   FilterChoice choice = o.filter;
   apply_filter_settings(choice, settings);
   if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
+  if (replay_truth && !replay_truth->radar_targets.empty()) {
+    // Several targets: the tracker and scoring of `run` on a multi-target
+    // scenario (cmd_multi.cpp), over this stream.
+    const std::vector<std::string> refused = multi_target_replay_refuses(o);
+    if (!refused.empty()) {
+      throw std::invalid_argument("--truth " + o.truth + " holds " + std::to_string(replay_truth->radar_targets.size()) +
+                                  " targets, scored by the multi-target tracker; " + join_names(refused) +
+                                  (refused.size() == 1 ? " does not apply to it" : " do not apply to it"));
+    }
+    return replay_multi_target(o, choice, StreamInput(std::move(bytes), format), replay_truth->radar_targets, source);
+  }
   const FilterEntry& filter = find_filter(choice.filter);
 
   FilterOptions options = choice.options;

@@ -12,6 +12,7 @@
 
 #include "filters/filter_registry.hpp"
 #include "filters/settings.hpp"
+#include "scenarios/scenario.hpp"
 
 namespace kestrel::sim::cli {
 
@@ -184,6 +185,17 @@ struct ReplayOptions {
   bool ungated = false;
   Cat062Output asterix_out;
 };
+/// `replay` of a radar stream against the truth of several targets (`target`
+/// column, what `generate` writes for a multi-target scenario): the
+/// multi-target tracker `run` uses for such a scenario (GNN, the board's
+/// gate; `filter` ekf-ca or imm with its resolved options) over `input`,
+/// scored with multi's metrics at each frame every target has a truth for;
+/// the track CSV, multi_steps.csv and a summary.json entry. cli/cmd_multi.cpp.
+int replay_multi_target(const ReplayOptions& o, const FilterChoice& filter, StreamInput input,
+                        const std::vector<std::vector<TruthSample>>& targets, const std::string& source);
+/// replay's options given that a multi-target replay does not take.
+std::vector<std::string> multi_target_replay_refuses(const ReplayOptions& o);
+
 /// Exit status of `replay` when its input held no frames (a 0-byte stream,
 /// a stream of which no frame decodes, a CSV with only its header): a
 /// warning, not an error (exit 1), but not a run either, so not 0.

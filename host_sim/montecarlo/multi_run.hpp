@@ -120,4 +120,15 @@ MultiRunDetail run_multi_once(const Scenario& scenario, std::uint64_t seed, cons
 /// The scored steps of a run: every target and the confirmed tracks per frame.
 std::vector<MultiTargetStep> multi_target_steps(const ScenarioRun& run, const StreamRunResult& stream);
 
+/// The tracker of `config` over a recorded stream (`replay`): nn or gnn;
+/// the oracle, which needs each plot's origin, throws std::invalid_argument.
+StreamRunResult run_multi_stream(const MultiRunParams& config, StreamInput input);
+
+/// The scored steps of a replay against a truth of several targets
+/// (targets[i]: target i's rows): each decoded frame at a time every target
+/// has a row for, to the wire's microsecond; `without_truth` counts the
+/// decoded frames without.
+std::vector<MultiTargetStep> multi_target_steps_at_times(const std::vector<std::vector<TruthSample>>& targets,
+                                                         const StreamRunResult& stream, std::size_t& without_truth);
+
 }  // namespace kestrel::sim

@@ -506,6 +506,46 @@ elseif(CHECK STREQUAL "run_kind_options")
       message(FATAL_ERROR "run -s ${scenario} ${args} wrote a summary")
     endif()
   endforeach()
+elseif(CHECK STREQUAL "replay_multi_target")
+  # generate writes every target of a multi-target scenario into its truth
+  # (target column); replay scores the stream against it with the tracker
+  # and metrics of run: the same figures as run of that seed. Options of the
+  # single-target scoring are refused by name, with nothing written.
+  execute_process(COMMAND ${SIM} generate -s crossing --seed 3 --out ${OUT}/crossing.stream
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(STRINGS ${OUT}/crossing.truth.csv truth_lines)
+  list(GET truth_lines 0 header)
+  list(LENGTH truth_lines rows)
+  if(NOT rc EQUAL 0 OR NOT header STREQUAL "time_s,target,x_m,y_m,vx_mps,vy_mps" OR NOT rows EQUAL 123)
+    message(FATAL_ERROR "generate -s crossing: truth header '${header}', ${rows} lines (${rc}):\n${out}${err}")
+  endif()
+  execute_process(COMMAND ${SIM} replay --stream ${OUT}/crossing.stream --truth ${OUT}/crossing.truth.csv --no-plots
+                          --out ${OUT}/replay
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE replayed ERROR_VARIABLE err)
+  execute_process(COMMAND ${SIM} run -s crossing --seed 3 --runs 1 --no-plots --out ${OUT}/run
+                  RESULT_VARIABLE rc_run OUTPUT_VARIABLE ran ERROR_VARIABLE err_run)
+  if(NOT rc EQUAL 0 OR NOT rc_run EQUAL 0 OR NOT replayed MATCHES "2 targets in [^\n]*; scored 61 frames")
+    message(FATAL_ERROR "replay (${rc}):\n${replayed}${err}\nrun (${rc_run}):\n${ran}${err_run}")
+  endif()
+  string(REGEX MATCH "GOSPA \\(mean over steps\\)[^\n]*\n(.*\n)*  targets never confirmed[^\n]*" figures_replay "${replayed}")
+  string(REGEX MATCH "GOSPA \\(mean over steps\\)[^\n]*\n(.*\n)*  targets never confirmed[^\n]*" figures_run "${ran}")
+  if(figures_replay STREQUAL "" OR NOT figures_replay STREQUAL figures_run)
+    message(FATAL_ERROR "replay's figures differ from run's:\n${figures_replay}\n--- run:\n${figures_run}")
+  endif()
+  file(READ ${OUT}/replay/summary.json summary)
+  string(JSON targets GET "${summary}" results replay ekf-ca targets)
+  string(JSON matched GET "${summary}" results replay ekf-ca truth_frames matched)
+  string(JSON gospa GET "${summary}" results replay ekf-ca gospa_m mean)
+  if(NOT targets EQUAL 2 OR NOT matched EQUAL 61 OR NOT gospa MATCHES "^[0-9]")
+    message(FATAL_ERROR "replay summary: targets ${targets}, matched ${matched}, GOSPA '${gospa}'")
+  endif()
+  execute_process(COMMAND ${SIM} replay --stream ${OUT}/crossing.stream --truth ${OUT}/crossing.truth.csv --ungated
+                          --no-plots --out ${OUT}/refused
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0 OR NOT err MATCHES "holds 2 targets, scored by the multi-target tracker; --ungated does not apply"
+     OR EXISTS ${OUT}/refused/summary.json)
+    message(FATAL_ERROR "replay --ungated of a multi-target truth was not refused by name (${rc}):\n${out}${err}")
+  endif()
 else()
   message(FATAL_ERROR "unknown CHECK '${CHECK}'")
 endif()
