@@ -63,7 +63,8 @@ int cmd_list(bool settings) {
               std::string(kSonarFilterName).c_str());
   std::printf("multi-target radar scenarios (crossing, raid, formation-split above): run or multi, with ekf-ca or "
               "imm, scored as `multi` scores them (OSPA, GOSPA, swaps); run and multi: --associator nn|gnn|oracle, "
-              "--gate-tentative, --compare-oracle, --cutoff, --order, --persistence");
+              "--gate-tentative, --compare-oracle, --cutoff, --order, --persistence; generate writes every target's "
+              "truth, which replay --truth scores the same way");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "
               "CRPF-100/300/500\n");
   return 0;
