@@ -32,7 +32,7 @@ bool is_name_of(const std::string& name, const std::vector<std::string>& names) 
 }
 
 // PCL and sonar scenarios: the wire stream and its truth, in the layout
-// `pcl` / `sonar` write for run 0 (csv/sensor_truth_csv.hpp), which `replay
+// `run` writes for run 0 (csv/sensor_truth_csv.hpp), which `replay
 // --truth` scores against.
 int generate_other_kind(const GenerateOptions& o) {
   std::vector<std::uint8_t> bytes;

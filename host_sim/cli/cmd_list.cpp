@@ -27,8 +27,8 @@ int cmd_list(bool settings) {
     const struct {
       const char* title;
       std::vector<SettingInfo> table;
-    } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, pcl, replay of a PCL stream)", pcl_setting_table()},
-                  {"the sonar tracker (run -s uw003..., sonar, replay of a sonar stream)", sonar_setting_table()}};
+    } others[] = {{"the PCL tracker (run -s pcl002|pcl002-hard, replay of a PCL stream)", pcl_setting_table()},
+                  {"the sonar tracker (run -s uw003..., sonar-study, replay of a sonar stream)", sonar_setting_table()}};
     for (const auto& t : others) {
       std::printf("keys of --set KEY=VALUE and --config FILE for %s:\n", t.title);
       for (const SettingInfo& i : t.table) {
@@ -50,19 +50,19 @@ int cmd_list(bool settings) {
   for (const FilterEntry& f : filter_registry()) {
     std::printf("  %-13s %s\n", std::string(f.name).c_str(), std::string(f.description).c_str());
   }
-  std::printf("PCL scenarios (run, pcl, generate; replay --stream of their streams, --scenario picks the sensor; "
+  std::printf("PCL scenarios (run, generate; replay --stream of their streams, --scenario picks the sensor; "
               "timing):\n ");
   for (const std::string& n : pcl_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the PCL tracker (keys: list --settings; run and pcl: --associator nn|gnn|pda, "
+  std::printf("\n  filter %s: the PCL tracker (keys: list --settings; run: --associator nn|gnn|pda, "
               "--manager m-of-n|score, --gate-tentative)\n",
               std::string(kPclFilterName).c_str());
-  std::printf("sonar scenarios (run, sonar, generate; replay --stream of their streams, --scenario picks the "
+  std::printf("sonar scenarios (run, generate; replay --stream of their streams, --scenario picks the "
               "installation; timing):\n ");
   for (const std::string& n : sonar_scenario_names()) std::printf(" %s", n.c_str());
-  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; `sonar --study`: the gate study)\n",
+  std::printf("\n  filter %s: the sonar tracker (keys: list --settings; sonar-study: the gate study)\n",
               std::string(kSonarFilterName).c_str());
-  std::printf("multi-target radar scenarios (crossing, raid, formation-split above): run or multi, with ekf-ca or "
-              "imm, scored as `multi` scores them (OSPA, GOSPA, swaps); run and multi: --associator nn|gnn|oracle, "
+  std::printf("multi-target radar scenarios (crossing, raid, formation-split above): run with ekf-ca or imm, "
+              "scored with OSPA, GOSPA, swaps, false tracks; run: --associator nn|gnn|oracle, "
               "--gate-tentative, --compare-oracle, --cutoff, --order, --persistence; generate writes every target's "
               "truth, which replay --truth scores the same way");
   std::printf("\ncampaigns (montecarlo): mc001, paper 001's noise grid with EKF, UKF, CDKF, SR-UKF, SR-CDKF, "

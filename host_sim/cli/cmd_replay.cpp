@@ -5,7 +5,7 @@
 // with a truth CSV, is scored like a scenario run; with --asterix-out its
 // reports are also CAT062. A PCL or sonar stream runs the tracker of its kind
 // with a scenario's sensor parameters and, with the truth CSV of its kind,
-// is scored with that kind's metrics, as `pcl` and `sonar` score a run.
+// is scored with that kind's metrics, as `run` scores a run of its scenarios.
 // --config and --set take the keys of the stream's kind.
 #include <algorithm>
 #include <cmath>
@@ -126,9 +126,9 @@ struct ReplayTruth {
   std::vector<double> times_s;
 };
 
-/// The kind's metrics of one run as summary fields: the figures `pcl` /
-/// `sonar` write into their summaries, without their run-count and settings
-/// fields (the replay entry has its own).
+/// The kind's metrics of one run as summary fields: the figures `run` of a
+/// PCL or sonar scenario writes into its summary, without its run-count and
+/// settings fields (the replay entry has its own).
 nlohmann::json metric_fields(nlohmann::json j, std::initializer_list<const char*> drop) {
   for (const char* key : drop) j.erase(key);
   return j;
@@ -147,7 +147,7 @@ OtherKindResult replay_pcl(std::vector<std::uint8_t> bytes, const std::string& s
                            const PclTrackerParams& params, std::uint64_t budget_ns,
                            const std::filesystem::path& dir, const ReplayTruth* truth) {
   const PclScenarioParams sc = pcl_config_by_name(scenario_name);
-  const TrackerPolicies policies{};  // pcl's defaults: nearest neighbour, M-of-N
+  const TrackerPolicies policies{};  // run's PCL defaults: nearest neighbour, M-of-N
   // The truth names the target's detection of each frame; without it which
   // candidate is the target's is unknown.
   const PclTargetLocator locate =
@@ -483,7 +483,7 @@ int cmd_replay(const ReplayOptions& o) {
   if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
   if (replay_truth && !replay_truth->radar_targets.empty()) {
     // Several targets: the tracker and scoring of `run` on a multi-target
-    // scenario (cmd_multi.cpp), over this stream.
+    // scenario (run_multi.cpp), over this stream.
     const std::vector<std::string> refused = multi_target_replay_refuses(o);
     if (!refused.empty()) {
       throw std::invalid_argument("--truth " + o.truth + " holds " + std::to_string(replay_truth->radar_targets.size()) +

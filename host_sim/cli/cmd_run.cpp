@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// `kestrel-sim run`: one scenario, one filter, N seeds. A PCL or sonar
-// scenario runs the Monte Carlo of `kestrel-sim pcl` / `sonar`, a
-// multi-target one that of `multi` (the same code), with their own options
-// (KindOptions) where the kind takes them.
+// `kestrel-sim run`: one scenario, one filter, N seeds. A PCL, sonar or
+// multi-target scenario runs its kind's Monte Carlo (run_pcl.cpp,
+// run_sonar.cpp, run_multi.cpp), with the options of KindOptions the kind
+// takes.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -11,8 +11,6 @@
 #include <string>
 #include <vector>
 
-#include "cli/cmd_pcl.hpp"
-#include "cli/cmd_sonar.hpp"
 #include "cli/commands.hpp"
 #include "cli/scenario_report.hpp"
 #include "plots/plot_runner.hpp"
@@ -85,15 +83,11 @@ int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind) {
   const std::string what = "scenario '" + o.scenario + "' is a " + sensor_kind_name(kind) + " scenario";
   if (kind == hal::FrameKind::kPcl) {
     check_kind_options(o.kind, {"--associator", "--manager", "--gate-tentative"}, what);
-    PclOptions p = options_of_run<PclOptions>(o);
-    if (!o.kind.associator.empty()) p.associator = o.kind.associator;
-    if (!o.kind.manager.empty()) p.manager = o.kind.manager;
-    p.gate_tentative = o.kind.gate_tentative;
-    return cmd_pcl(p);
+    return run_pcl(o);
   }
   if (kind == hal::FrameKind::kSonar) {
     check_kind_options(o.kind, {}, what);
-    return cmd_sonar(options_of_run<SonarOptions>(o));
+    return run_sonar(o);
   }
   throw std::invalid_argument("scenario '" + o.scenario + "' is a radar scenario: `run` runs it with a radar filter");
 }

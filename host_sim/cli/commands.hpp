@@ -71,8 +71,8 @@ struct Cat062Output {
 };
 int cmd_generate(const GenerateOptions& o);
 
-/// `run`'s options for some scenario kinds only (the rest of `pcl`'s and
-/// `multi`'s); given for a scenario they do not apply to, they are an error.
+/// `run`'s options for some scenario kinds only; given for a scenario they
+/// do not apply to, they are an error.
 struct KindOptions {
   std::string associator;  ///< PCL: nn, gnn or pda (nn); several radar targets: nn, gnn or oracle (gnn).
   std::string manager;     ///< PCL: m-of-n or score (m-of-n).
@@ -97,36 +97,32 @@ struct RunOptions {
 };
 int cmd_run(const RunOptions& o);
 
-/// run's options as another command's (`pcl`, `sonar`, `multi`: their
-/// fields share the names): scenario, runs, seed, jobs, out, plots, budget,
-/// --config and --set.
-template <class Options>
-Options options_of_run(const RunOptions& o) {
-  Options s;
-  s.scenario = o.scenario;
-  s.runs = o.runs;
-  s.seed = o.seed;
-  s.jobs = o.jobs;
-  s.out = o.out;
-  s.plots = o.plots;
-  s.budget_us = o.filter.budget_us;
-  s.config = o.filter.config;
-  s.sets = o.filter.sets;
-  return s;
-}
+/// `run` of a PCL scenario: the PCL tracker's Monte Carlo with run's
+/// scenario, runs, seed, jobs, out (default results/<scenario>), plots,
+/// budget, --config/--set (the keys of filters/sensor_settings.hpp),
+/// --associator, --manager and --gate-tentative. cli/run_pcl.cpp.
+int run_pcl(const RunOptions& o);
 
-/// `run` of a PCL or sonar scenario (`kind`): the Monte Carlo, files and
-/// printout of `pcl` / `sonar` with run's scenario, runs, seed, jobs, out,
-/// plots, budget, --config/--set (the keys of filters/sensor_settings.hpp)
-/// and, for PCL, --associator, --manager and --gate-tentative.
-/// The one place run's options become PclOptions / SonarOptions; suite's pcl
-/// and sonar parts come through it too.
+/// `run` of a sonar scenario: the sonar tracker's Monte Carlo with run's
+/// scenario, runs, seed, jobs, out, plots, budget and --config/--set.
+/// cli/run_sonar.cpp.
+int run_sonar(const RunOptions& o);
+
+/// `sonar-study`: every sonar scenario with the paper's gate (k = 2), k = 3
+/// and no gate, over run's runs, seed, jobs, out (default
+/// results/sonar_study), plots, budget and --config/--set; writes
+/// sonar_study.md / .json and one folder per row. cli/run_sonar.cpp.
+int cmd_sonar_study(const RunOptions& o);
+
+/// `run` of a PCL or sonar scenario (`kind`): run_pcl or run_sonar, after
+/// refusing the options of KindOptions the kind does not take. Suite's pcl
+/// and sonar parts and sweep come through it too.
 int run_sensor_scenario(const RunOptions& o, hal::FrameKind kind);
 
 /// `run` of a multi-target scenario (crossing, raid, formation-split): the
-/// Monte Carlo, files and printout of `multi` with run's scenario, runs,
-/// seed, jobs, out, plots, budget, filter (ekf-ca or imm), resolved filter
-/// options and KindOptions. cli/cmd_multi.cpp.
+/// multi-target tracker's Monte Carlo with run's scenario, runs, seed, jobs,
+/// out (default results/<scenario>-multi), plots, budget, filter (ekf-ca or
+/// imm), resolved filter options and KindOptions. cli/run_multi.cpp.
 int run_multi_target_scenario(const RunOptions& o);
 
 /// "wrote N CAT062 blocks ..." for --asterix-out (cmd_run.cpp).
@@ -190,7 +186,7 @@ struct ReplayOptions {
 /// multi-target tracker `run` uses for such a scenario (GNN, the board's
 /// gate; `filter` ekf-ca or imm with its resolved options) over `input`,
 /// scored with multi's metrics at each frame every target has a truth for;
-/// the track CSV, multi_steps.csv and a summary.json entry. cli/cmd_multi.cpp.
+/// the track CSV, multi_steps.csv and a summary.json entry. cli/run_multi.cpp.
 int replay_multi_target(const ReplayOptions& o, const FilterChoice& filter, StreamInput input,
                         const std::vector<std::vector<TruthSample>>& targets, const std::string& source);
 /// replay's options given that a multi-target replay does not take.
@@ -211,9 +207,9 @@ struct TimingOptions {
 };
 int cmd_timing(const TimingOptions& o);
 /// timing of a multi-target scenario: the step times (adapter + step, ns,
-/// every stepped frame) of the tracker `run` and `multi` use for it (GNN,
+/// every stepped frame) of the tracker `run` uses for it (GNN,
 /// kMultiMaxTracks tracks) over o.runs seeds, one job; `what` names it.
-/// cli/cmd_multi.cpp.
+/// cli/run_multi.cpp.
 std::vector<std::uint64_t> multi_target_step_times(const TimingOptions& o, std::string& what);
 /// The worst-case frame of `board` (cortex-m4f, cortex-m7, cortex-m0plus,
 /// riscv64-linux or host), adapter + step timed `reps` times per counted frame.

@@ -13,11 +13,8 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/cmd_montecarlo.hpp"
-#include "cli/cmd_multi.hpp"
-#include "cli/cmd_pcl.hpp"
 #include "cli/cmd_r2aekf.hpp"
 #include "cli/cmd_scalars.hpp"
-#include "cli/cmd_sonar.hpp"
 #include "cli/commands.hpp"
 #include "kestrel/version.hpp"
 #include "scenarios/sensor_kind.hpp"
@@ -95,8 +92,7 @@ int main(int argc, char** argv) {
 
   RunOptions run;
   CLI::App* run_cmd = app.add_subcommand("run", "Monte Carlo runs of one scenario with one filter");
-  run_cmd->add_option("--scenario,-s", run.scenario,
-                      "Scenario (see `list`): radar, or PCL/sonar (the Monte Carlo of `pcl` / `sonar`)")
+  run_cmd->add_option("--scenario,-s", run.scenario, "Scenario (see `list`): radar (one or several targets), PCL or sonar")
       ->required();
   add_filter_options(run_cmd, run.filter);
   run_cmd->add_option("--runs,-n", run.runs, "Monte Carlo runs")->capture_default_str();
@@ -105,7 +101,7 @@ int main(int argc, char** argv) {
   run_cmd->add_option("--out,-o", run.out, "Output directory (default results/<scenario>)");
   run_cmd->add_flag("!--no-plots", run.plots, "Do not run the plot script");
   add_cat062_output(run_cmd, run.asterix_out);
-  // pcl's and multi's own options; each is refused for a kind it does not fit.
+  // Options of some kinds only; each is refused for a kind it does not fit.
   run_cmd->add_option("--associator", run.kind.associator,
                       "PCL: nn, gnn or pda (default nn); several radar targets: nn, gnn or oracle (default gnn)");
   run_cmd->add_option("--manager", run.kind.manager, "PCL: m-of-n (default) or score (sequential log-likelihood ratio)");
@@ -185,17 +181,25 @@ int main(int argc, char** argv) {
   timing_cmd->add_option("--runs,-n", timing.runs, "Runs")->capture_default_str();
   timing_cmd->add_option("--seed", timing.seed, "Seed of run 0")->capture_default_str();
 
-  PclOptions pcl;
-  CLI::App* pcl_cmd = add_pcl_command(app, pcl);
-
-  MultiOptions multi;
-  CLI::App* multi_cmd = add_multi_command(app, multi);
-
   kestrel::sim::R2AekfStudyOptions r2aekf;
   CLI::App* r2aekf_cmd = add_r2aekf_command(app, r2aekf);
 
-  SonarOptions sonar;
-  CLI::App* sonar_cmd = add_sonar_command(app, sonar);
+  RunOptions sonar_study;
+  sonar_study.runs = 200;
+  CLI::App* sonar_study_cmd = app.add_subcommand(
+      "sonar-study", "Every sonar scenario (uw003 and variants) with the paper's gate k = 2, k = 3 and no gate");
+  sonar_study_cmd->add_option("--runs,-n", sonar_study.runs, "Monte Carlo runs per row")->capture_default_str();
+  sonar_study_cmd->add_option("--seed", sonar_study.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
+  sonar_study_cmd->add_option("--jobs,-j", sonar_study.jobs, "Worker threads (results do not depend on it)")
+      ->capture_default_str();
+  sonar_study_cmd->add_option("--out,-o", sonar_study.out, "Output directory (default results/sonar_study)");
+  sonar_study_cmd->add_flag("!--no-plots", sonar_study.plots, "Do not run the plot script");
+  sonar_study_cmd->add_option("--budget-us", sonar_study.filter.budget_us, "Step budget for overrun counting, us")
+      ->capture_default_str();
+  sonar_study_cmd->add_option("--config", sonar_study.filter.config,
+                              "JSON file of sonar tracker parameters by key (`list --settings`)");
+  sonar_study_cmd->add_option("--set", sonar_study.filter.sets,
+                              "KEY=VALUE, repeatable: one sonar tracker parameter (each row sets its own gate)");
 
   ScalarsOptions scalars;
   CLI::App* scalars_cmd = add_scalars_command(app, scalars);
@@ -267,12 +271,10 @@ int main(int argc, char** argv) {
     if (app.got_subcommand(sweep_cmd)) return cmd_sweep(sweep);
     if (app.got_subcommand(replay_cmd)) return cmd_replay(replay);
     if (app.got_subcommand(timing_cmd)) return cmd_timing(timing);
-    if (app.got_subcommand(pcl_cmd)) return cmd_pcl(pcl);
-    if (app.got_subcommand(multi_cmd)) return cmd_multi(multi);
     if (app.got_subcommand(montecarlo_cmd)) return cmd_montecarlo(montecarlo);
     if (app.got_subcommand(merge_cmd)) return cmd_merge(merge);
     if (app.got_subcommand(r2aekf_cmd)) return cmd_r2aekf(r2aekf);
-    if (app.got_subcommand(sonar_cmd)) return cmd_sonar(sonar);
+    if (app.got_subcommand(sonar_study_cmd)) return cmd_sonar_study(sonar_study);
     if (app.got_subcommand(scalars_cmd)) return cmd_scalars(scalars);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "kestrel-sim: error: %s\n", e.what());

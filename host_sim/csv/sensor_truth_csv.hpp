@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Truth CSVs of the PCL and sonar scenarios (docs/host_sim.md, "Scoring a
 // PCL or sonar replay"), one row per frame time, written by `generate`
-// beside the stream and by `pcl` / `sonar` for run 0, and read by `replay
+// beside the stream and by `run` for run 0, and read by `replay
 // --truth`. Beside the target's state each row carries what the kind's
 // scorer needs of the sensor's side: for PCL, whether the sensor detected
 // the target and the wire values of that detection (so the replay can find

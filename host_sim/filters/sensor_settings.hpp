@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The PCL and sonar trackers' parameters by name: the keys `--set
-// KEY=VALUE` and `--config FILE` take on `run -s pcl002|uw003...`, `pcl`
-// and `sonar` (docs/parameters.md, "PCL tracker" and "Sonar tracker").
+// KEY=VALUE` and `--config FILE` take on `run -s pcl002|uw003...`,
+// `sonar-study` and `replay` (docs/parameters.md, "PCL tracker" and "Sonar tracker").
 // As for the radar keys (filters/settings.hpp), one table per tracker maps
 // each key to its field, range and meaning, so the parser, the range check,
 // the echo into the summary and `list --settings` cannot drift apart.

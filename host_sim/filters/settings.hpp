@@ -72,7 +72,7 @@ void apply_measurement_noise(Tracker& tracker, const RadarTrackerParams& p) {
 /// p's seed rules (seed_extra_frames, seed_from_pairs) when it is a
 /// TwoPointHypothesesInitiator. Throws std::invalid_argument naming the keys
 /// when p sets a rule a TwoPointInitiator does not have (all but ekf-ca,
-/// ekf-ca-f32, imm, imm-f32 and `multi`).
+/// ekf-ca-f32, imm, imm-f32 and the multi-target tracker).
 template <class Tracker, class Radar>
 typename Tracker::InitiatorT radar_initiator(const Radar& radar, typename Tracker::Scalar max_speed_mps,
                                              typename Tracker::Scalar init_accel_sigma_mps2,
@@ -89,7 +89,7 @@ typename Tracker::InitiatorT radar_initiator(const Radar& radar, typename Tracke
     throw std::invalid_argument("seed_extra_frames " + std::to_string(p.seed_extra_frames) + ", seed_from_pairs " +
                                 std::to_string(p.seed_from_pairs ? 1 : 0) +
                                 ": refused: this filter's tracker keeps one hypothesis per start (ekf-ca, ekf-ca-f32, "
-                                "imm, imm-f32 and multi keep more; docs/robustness.md, \"A second hypothesis at the "
+                                "imm, imm-f32 and the multi-target tracker keep more; docs/robustness.md, \"A second hypothesis at the "
                                 "start\")");
   }
   return init;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Scoring a replayed PCL or sonar stream against its truth CSV
-// (csv/sensor_truth_csv.hpp) with the kind's own scorer, the one `pcl` and
-// `sonar` use (metrics/pcl_metrics.hpp, metrics/sonar_metrics.hpp). A frame is
+// (csv/sensor_truth_csv.hpp) with the kind's own scorer, the one `run` of a
+// PCL or sonar scenario uses (metrics/pcl_metrics.hpp, metrics/sonar_metrics.hpp). A frame is
 // matched to the truth row at its wire time, to the microsecond, as a radar
 // replay matches its truth; frames that did not reach the tracker (no time)
 // or have no truth row are left out of the scored sequence and counted. On

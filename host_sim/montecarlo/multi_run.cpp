@@ -52,7 +52,7 @@ const char* multi_associator_name(MultiAssociator a) {
 MultiFilter multi_filter_by_name(const std::string& name) {
   if (name == "ekf-ca") return MultiFilter::kEkfCa;
   if (name == "imm") return MultiFilter::kImm;
-  throw std::invalid_argument("unknown filter '" + name + "' for multi (known: ekf-ca, imm)");
+  throw std::invalid_argument("unknown filter '" + name + "' for several targets (known: ekf-ca, imm)");
 }
 
 const char* multi_filter_name(MultiFilter f) { return f == MultiFilter::kImm ? "imm" : "ekf-ca"; }

@@ -41,7 +41,7 @@ const char* multi_associator_name(MultiAssociator a);
 /// GNN when the scenario has more than one target, nearest neighbour otherwise.
 MultiAssociator default_multi_associator(const ScenarioInfo& info);
 
-/// The radar filters `multi` runs: EKF-CA, or the IMM (CV/CA/CT, docs/imm.md)
+/// The radar filters of a multi-target run: EKF-CA, or the IMM (CV/CA/CT, docs/imm.md)
 /// with its defaults and the `imm.KEY` settings.
 enum class MultiFilter { kEkfCa, kImm };
 

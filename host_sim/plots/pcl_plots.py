@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """Range-Doppler plot of one PCL run, like paper 002's figure 2 (called by
-`kestrel-sim pcl`; runnable by hand).
+`kestrel-sim run -s pcl002`; runnable by hand).
 
   pcl_plots.py --dir D [--title X] [--out D/pcl_range_doppler.png]
 
 Reads D/pcl_candidates.csv, D/pcl_tracks.csv and D/pcl_truth.csv (written by
-`kestrel-sim pcl`) and draws, in the bistatic range / Doppler plane and
+`kestrel-sim run -s pcl002`) and draws, in the bistatic range / Doppler plane and
 against time:
   - every candidate of every frame (grey dots; zero-Doppler ridge included),
   - the candidates the target track chose (black dots joined by a dotted

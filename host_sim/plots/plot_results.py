@@ -14,7 +14,7 @@
       (from the truth of S.csv) marked along the top, and the truth's turn
       rate and dv/dt below
   plot_results.py gospa --steps multi_steps.csv --out P.png [--title X]
-      mean GOSPA and OSPA per step of each associator `kestrel-sim multi`
+      mean GOSPA and OSPA per step of each associator `kestrel-sim run` of a multi-target scenario
       ran (e.g. GNN and the oracle)
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
@@ -252,7 +252,7 @@ def main():
     m.add_argument("--turn-radps", type=float, default=0.02, help="mark the truth's turns above this rate")
     m.add_argument("--speed-mps2", type=float, default=2.0, help="mark the truth's speed changes above this")
     g = sub.add_parser("gospa")
-    g.add_argument("--steps", required=True, help="multi_steps.csv of `kestrel-sim multi`")
+    g.add_argument("--steps", required=True, help="multi_steps.csv of `kestrel-sim run` of a multi-target scenario")
     g.add_argument("--out", required=True)
     g.add_argument("--title", default="kestrel-sim")
     args = p.parse_args()

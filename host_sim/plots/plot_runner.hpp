@@ -32,7 +32,7 @@ bool plot_modes(const std::filesystem::path& modes_csv, const std::filesystem::p
                 const std::filesystem::path& png, const std::string& title);
 
 /// Mean GOSPA and OSPA per step of every associator in a multi_steps.csv
-/// (`kestrel-sim multi`). @return true only if the PNG was written.
+/// (`kestrel-sim run` of a multi-target scenario). @return true only if the PNG was written.
 bool plot_gospa(const std::filesystem::path& steps_csv, const std::filesystem::path& png, const std::string& title);
 
 /// Bar chart of the figures in a summary.json, per scenario and filter.

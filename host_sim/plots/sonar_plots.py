@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """Figures of one UW run and of its Monte Carlo, like paper 003's figures 1-3
-(called by `kestrel-sim sonar`; runnable by hand).
+(called by `kestrel-sim run -s uw003`; runnable by hand).
 
   sonar_plots.py --dir D [--title X]
 
 Reads D/sonar_truth.csv, D/sonar_track.csv, D/sonar_arrivals.csv (run 0) and
-D/sonar_steps.csv (per-frame RMSE over the runs), written by `kestrel-sim sonar`,
+D/sonar_steps.csv (per-frame RMSE over the runs), written by `kestrel-sim run -s uw003`,
 and draws:
   D/sonar_track.png        the track as x-y and x-z projections (truth green,
                         estimate red, beacons, the seabed; the fix frame

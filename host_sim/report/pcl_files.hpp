@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The files `kestrel-sim pcl` writes into its output directory:
+// The files `kestrel-sim run -s pcl002` writes into its output directory:
 //   pcl_runs.csv        one row per Monte Carlo run (the per-run figures);
 //   pcl_truth.csv       run 0: the drone (x, y, z, velocity) and its Rb, dRb, fD,
 //                       and the target's detection (csv/sensor_truth_csv.hpp);
@@ -31,7 +31,7 @@ void write_pcl_runs_csv(const std::filesystem::path& path, const std::vector<Pcl
 void write_pcl_run_csvs(const std::filesystem::path& dir, const PclScenarioParams& scenario,
                         const PclScenarioRun& run, const PclRunOutput& out, const PclTolerance& tolerance);
 
-/// pcl_tracks.csv alone: every confirmed track of every frame (`pcl` for
+/// pcl_tracks.csv alone: every confirmed track of every frame (`run` for
 /// run 0, `replay --stream` for a recorded PCL stream). time_s[k] is frame
 /// k's time; with `truth` (frame k's truth at index k), on_target is 0/1,
 /// without it (or where that truth's rb_m is NaN) the cell is empty.

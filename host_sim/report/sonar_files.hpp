@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The files `kestrel-sim sonar` writes into its output directory:
+// The files `kestrel-sim run -s uw003` writes into its output directory:
 //   sonar_runs.csv       one row per Monte Carlo run (the per-run figures);
 //   sonar_steps.csv      per frame over the runs: 3D, horizontal and depth RMSE
 //                     and the RMS sound-speed error, and how many runs scored;
@@ -33,7 +33,7 @@ void write_sonar_steps_csv(const std::filesystem::path& path, const SonarSummary
 /// sonar_truth.csv, sonar_arrivals.csv and sonar_track.csv of one run.
 void write_sonar_run_csvs(const std::filesystem::path& dir, const SonarScenarioRun& run, const SonarRunOutput& out);
 
-/// sonar_track.csv alone: one row per frame (`sonar` for run 0, `replay --stream`
+/// sonar_track.csv alone: one row per frame (`run` for run 0, `replay --stream`
 /// for a recorded sonar stream); time_s[k] is frame k's time (NaN: empty).
 void write_sonar_track_csv(const std::filesystem::path& path, const std::vector<SonarFrameOutcome>& frames,
                         const std::vector<double>& time_s);

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// summary.json: the machine-readable result of `run`, `replay`, `suite`,
-// `pcl`, `sonar` and `multi`, one schema for every kind:
+// summary.json: the machine-readable result of `run`, `replay`, `suite`
+// and `sweep`, one schema for every kind:
 //   { "schema": "kestrel-sim-summary/1",
 //     "results": { "<scenario>": { "<filter>": { "kind": ..., ...entry... } } } }
 // "kind" is the frames' kind (radar, PCL, sonar); a PCL, sonar or
 // multi-target entry holds its own figures (report/pcl_files.hpp,
-// report/sonar_files.hpp, cli/cmd_multi.cpp). A single-target radar entry
+// report/sonar_files.hpp, cli/run_multi.cpp). A single-target radar entry
 // holds rmse_m, peak_m, nees_pos, nis, track_loss_s, recovery_s (each
 // {mean, ci95_low, ci95_high, n}), runs, runs_without_loss, step_ns
 // {min, median, p99, max, mean, steps, budget_ns, overruns}, and the

@@ -211,17 +211,17 @@ elseif(CHECK STREQUAL "replay_pcl_stream" OR CHECK STREQUAL "replay_sonar_stream
 elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
   # A generated PCL (sonar) stream replayed with the truth generate wrote
   # beside it is scored with the kind's metrics, and they are the ones
-  # `pcl` (`sonar`) reports for the same seed (one run).
+  # `run` reports for the same scenario and seed (one run).
   if(CHECK STREQUAL "replay_truth_pcl")
     set(scenario pcl002)
     set(filter pcl-kf)
-    set(cmd pcl)
+    set(files pcl)
     set(keys association_accuracy coverage_after_confirmation false_confirmed_tracks_per_run rb_rmse_m)
     set(printed "association accuracy [01]\\.[0-9]+ \\([0-9]+ of [0-9]+ frames\\), coverage after confirmation")
   else()
     set(scenario uw003)
     set(filter sonar-ekf)
-    set(cmd sonar)
+    set(files sonar)
     set(keys rmse_3d_m rmse_h_m rmse_depth_m nees c_err_std_per_run_mps)
     set(printed "3D RMSE [0-9]+\\.[0-9]+ m, horizontal [0-9.]+ m, depth [0-9.]+ m")
   endif()
@@ -238,10 +238,10 @@ elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
      NOT out MATCHES "${printed}")
     message(FATAL_ERROR "replay --truth did not print the ${scenario} metrics:\n${out}")
   endif()
-  execute_process(COMMAND ${SIM} ${cmd} --scenario ${scenario} --seed 3 --runs 1 --no-plots --out ${OUT}/run
+  execute_process(COMMAND ${SIM} run --scenario ${scenario} --seed 3 --runs 1 --no-plots --out ${OUT}/run
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${cmd} --seed 3 --runs 1 failed (${rc}):\n${out}${err}")
+    message(FATAL_ERROR "run -s ${scenario} --seed 3 --runs 1 failed (${rc}):\n${out}${err}")
   endif()
   file(READ ${OUT}/replay/summary.json replay)
   file(READ ${OUT}/run/summary.json run)
@@ -253,14 +253,15 @@ elseif(CHECK STREQUAL "replay_truth_pcl" OR CHECK STREQUAL "replay_truth_sonar")
     string(JSON got GET "${replay}" results replay ${filter} ${key} mean)
     string(JSON want GET "${run}" results ${scenario} ${filter} ${key} mean)
     if(NOT got STREQUAL want)
-      message(FATAL_ERROR "replay's ${key} is ${got}, ${cmd}'s run of the same seed ${want}")
+      message(FATAL_ERROR "replay's ${key} is ${got}, run's of the same seed ${want}")
     endif()
   endforeach()
-  # pcl's and sonar's own run-0 truth is the same file: replay takes it too.
-  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/s.truth.csv ${OUT}/run/${cmd}_truth.csv
+  # run's own run-0 truth (pcl_truth.csv, sonar_truth.csv) is the same
+  # file: replay takes it too.
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${OUT}/s.truth.csv ${OUT}/run/${files}_truth.csv
                   RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "generate's s.truth.csv differs from ${cmd}'s ${cmd}_truth.csv of the same seed")
+    message(FATAL_ERROR "generate's s.truth.csv differs from run's ${files}_truth.csv of the same seed")
   endif()
 elseif(CHECK STREQUAL "replay_truth_mismatch")
   # Truth of another kind, or at no frame's time, is an error naming it and

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/cmd_sonar.hpp"
-
+// `run` of a sonar scenario (uw003 and its variants; docs/sonar.md): the
+// Monte Carlo of the sonar tracker, scored with the UW metrics (3D /
+// horizontal / depth RMSE, sound-speed error std, gated-out arrivals
+// against the true outliers); its files are listed in report/sonar_files.hpp.
+// `sonar-study`: every variant with the paper's gate (k = 2), k = 3 and no
+// gate, and the comparison table (sonar_study.md / .json).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,9 +13,8 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/commands.hpp"
+#include "cli/scenario_report.hpp"
 #include "filters/sensor_settings.hpp"
 #include "metrics/sonar_metrics.hpp"
 #include "report/output_files.hpp"
@@ -27,22 +30,14 @@ void print_ci(const char* name, const MeanCi& m, const char* unit) {
   std::printf("  %-34s %9.3f  [%.3f, %.3f] %s (n = %zu)\n", name, m.mean, m.ci95_low, m.ci95_high, unit, m.n);
 }
 
-SonarTrackerParams params_from(const SonarOptions& o, const SonarScenarioParams& scenario) {
+/// The scenario's tracker, then --config and --set (`extra` last: the study's
+/// gate of the row).
+SonarTrackerParams params_from(const RunOptions& o, const SonarScenarioParams& scenario,
+                               const std::vector<Setting>& extra = {}) {
   SonarTrackerParams p = sonar_params_for(scenario);
-  // --config, then --set, then the options of their own.
-  apply_sonar_settings(read_settings(o.config, o.sets), p);
-  if (o.gate_k) {
-    if (!(*o.gate_k > 0.0)) throw std::invalid_argument("--gate-k must be positive");
-    p.gate_k_sigma = *o.gate_k;
-  }
-  if (o.no_gate) p.per_channel_gate = false;
-  if (o.ellipsoidal) p.ellipsoidal_gate = true;
-  if (o.ellipsoid_probability) p.ellipsoid_probability = gate_option(*o.ellipsoid_probability, "--ellipsoid-p");
-  if (o.accel_sigma_mps2) p.accel_sigma_mps2 = *o.accel_sigma_mps2;
-  if (o.sound_speed_sigma) p.sound_speed_sigma_mps_per_sqrt_s = *o.sound_speed_sigma;
-  if (o.reacquire_after) p.reacquire_after_lost_frames = static_cast<std::uint16_t>(*o.reacquire_after);
-  if (o.no_gate_truncation) p.gate_truncation_covariance = false;
-  if (o.no_depth_projection) p.project_depth = false;
+  std::vector<Setting> settings = read_settings(o.filter.config, o.filter.sets);
+  settings.insert(settings.end(), extra.begin(), extra.end());
+  apply_sonar_settings(settings, p);
   return p;
 }
 
@@ -57,18 +52,20 @@ std::string gate_label(const SonarTrackerParams& p) {
   return s.empty() ? "no gate" : s;
 }
 
-SonarMonteCarloParams mc_config(const SonarOptions& o) {
+SonarMonteCarloParams mc_config(const RunOptions& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  if (!(o.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
+  if (!(o.filter.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
   SonarMonteCarloParams c;
   c.runs = o.runs;
   c.base_seed = o.seed;
   c.jobs = o.jobs;
-  c.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  c.budget_ns = budget_ns_from_us(o.filter.budget_us);
   return c;
 }
 
-int run_single(const SonarOptions& o) {
+}  // namespace
+
+int run_sonar(const RunOptions& o) {
   const SonarScenarioParams scenario = sonar_config_by_name(o.scenario);
   const SonarTrackerParams params = params_from(o, scenario);
   const SonarMonteCarloParams config = mc_config(o);
@@ -119,8 +116,7 @@ int run_single(const SonarOptions& o) {
   return 0;
 }
 
-/// Every variant with the paper's gate (k = 2), k = 3 and no gate.
-int run_study(const SonarOptions& o) {
+int cmd_sonar_study(const RunOptions& o) {
   const SonarMonteCarloParams config = mc_config(o);
   const std::filesystem::path dir =
       o.out.empty() ? std::filesystem::path("results") / "sonar_study" : std::filesystem::path(o.out);
@@ -140,10 +136,9 @@ int run_study(const SonarOptions& o) {
   for (const std::string& name : sonar_scenario_names()) {
     const SonarScenarioParams scenario = sonar_config_by_name(name);
     for (const Gate& g : gates) {
-      SonarOptions oo = o;
-      oo.gate_k = g.k;
-      oo.no_gate = !g.per_channel;
-      const SonarTrackerParams params = params_from(oo, scenario);
+      const SonarTrackerParams params =
+          params_from(o, scenario, {Setting{"gate_k_sigma", g.k, "the study's row"},
+                                    Setting{"per_channel_gate", g.per_channel ? 1.0 : 0.0, "the study's row"}});
       const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
       const SonarSummary s = summarise_sonar(mc.runs, config.budget_ns);
       const std::filesystem::path sub = dir / (name + "_" + (g.per_channel ? "k" + std::to_string(static_cast<int>(g.k))
@@ -172,7 +167,7 @@ int run_study(const SonarOptions& o) {
   {
     std::ofstream f(dir / "sonar_study.md", std::ios::trunc);
     f << "UW study: " << config.runs << " runs per row, seeds " << config.base_seed << ".."
-      << config.base_seed + config.runs - 1 << " (kestrel-sim sonar --study)\n\n"
+      << config.base_seed + config.runs - 1 << " (kestrel-sim sonar-study)\n\n"
       << md;
     if (!f) throw std::runtime_error("cannot write sonar_study.md");
   }
@@ -181,36 +176,5 @@ int run_study(const SonarOptions& o) {
   std::printf("wrote %s/{sonar_study.md, sonar_study.json} and one folder per row\n", dir.c_str());
   return 0;
 }
-
-}  // namespace
-
-CLI::App* add_sonar_command(CLI::App& app, SonarOptions& o) {
-  CLI::App* cmd = app.add_subcommand("sonar", "Sonar (underwater multipath TOA) Monte Carlo (uw003 and variants)");
-  cmd->add_option("--scenario,-s", o.scenario, "uw003, uw003-direct, uw003-clean, uw003-d100 or uw003-1ms")
-      ->capture_default_str();
-  cmd->add_option("--runs,-n", o.runs, "Monte Carlo runs")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
-  cmd->add_option("--jobs,-j", o.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
-  cmd->add_option("--out,-o", o.out, "Output directory (default results/<scenario>)");
-  cmd->add_flag("!--no-plots", o.plots, "Do not run the plot script");
-  cmd->add_flag("--study", o.study, "Every variant with k = 2, k = 3 and no gate; writes sonar_study.md");
-  cmd->add_option("--budget-us", o.budget_us, "Step budget for overrun counting, us")->capture_default_str();
-  cmd->add_option("--config", o.config,
-                  "JSON file of sonar tracker parameters by key (`list --settings`, docs/parameters.md)");
-  cmd->add_option("--set", o.sets, "KEY=VALUE, repeatable: one sonar tracker parameter; wins over --config, "
-                                   "loses to the parameter's own option (--gate-k, ...)");
-  cmd->add_option("--gate-k", o.gate_k, "Per-channel gate multiplier k (default 2, the paper's)");
-  cmd->add_flag("--no-gate", o.no_gate, "Per-channel gate off");
-  cmd->add_flag("--ellipsoidal", o.ellipsoidal, "Ellipsoidal gate on (after the per-channel gate)");
-  cmd->add_option("--ellipsoid-p", o.ellipsoid_probability, "Its probability (default 0.99)");
-  cmd->add_option("--accel-sigma", o.accel_sigma_mps2, "White acceleration per axis, m/s^2 (default 0.05)");
-  cmd->add_option("--sound-speed-sigma", o.sound_speed_sigma, "c random walk, m/s per sqrt(s) (default 0.3)");
-  cmd->add_flag("--no-gate-truncation", o.no_gate_truncation, "Do not widen P for channels the per-channel gate dropped");
-  cmd->add_flag("--no-depth-projection", o.no_depth_projection, "Do not keep the depth estimate within (0, D)");
-  cmd->add_option("--reacquire-after", o.reacquire_after, "Re-run the fix after this many frames in a row that fused at most half their arrivals (0: never)");
-  return cmd;
-}
-
-int cmd_sonar(const SonarOptions& o) { return o.study ? run_study(o) : run_single(o); }
 
 }  // namespace kestrel::sim::cli

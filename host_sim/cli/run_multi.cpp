@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-#include "cli/cmd_multi.hpp"
-
+// `run` of a multi-target radar scenario (crossing, raid, formation-split;
+// docs/multitarget.md): the Monte Carlo of the multi-target tracker, scored
+// with OSPA, GOSPA, track swaps, false confirmed tracks, fragmentation and
+// time to confirm, optionally beside the same runs with the oracle
+// associator; `replay` against several targets' truth and `timing` of such
+// a scenario take the same tracker.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,9 +15,8 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "cli/commands.hpp"
+#include "cli/scenario_report.hpp"
 #include "filters/ekf_ca.hpp"
 #include "filters/imm_filters.hpp"
 #include "filters/sensor_settings.hpp"
@@ -101,7 +104,7 @@ nlohmann::json summary_json(const Summary& s) {
 
 /// The results[scenario][filter] entry of summary.json: the settings, the
 /// associator's figures and, with --compare-oracle, the oracle's.
-nlohmann::json summary_entry(const MultiOptions& o, const ScenarioInfo& info, const MultiRunParams& config,
+nlohmann::json summary_entry(const RunOptions& o, const ScenarioInfo& info, const MultiRunParams& config,
                              const char* filter_label, const Summary& main, const Summary* oracle) {
   FilterOptions gate = config.options;
   gate.board_gate = true;  // make_multi_target_tracker gates confirmed tracks as a board does
@@ -118,9 +121,9 @@ nlohmann::json summary_entry(const MultiOptions& o, const ScenarioInfo& info, co
                           {"parameters", parameters},
                           {"runs", o.runs},
                           {"base_seed", o.seed},
-                          {"cutoff_m", o.cutoff_m},
-                          {"order", o.order},
-                          {"persistence_steps", o.persistence_steps}};
+                          {"cutoff_m", o.kind.cutoff_m},
+                          {"order", o.kind.order},
+                          {"persistence_steps", o.kind.persistence_steps}};
   entry.update(summary_json(main));
   if (oracle != nullptr) entry["oracle"] = summary_json(*oracle);
   return entry;
@@ -130,7 +133,7 @@ struct McResult {
   std::vector<MultiTargetRunMetrics> runs;
 };
 
-McResult run_mc(const Scenario& scenario, const MultiOptions& o, const MultiRunParams& config) {
+McResult run_mc(const Scenario& scenario, const RunOptions& o, const MultiRunParams& config) {
   McResult r;
   r.runs.resize(o.runs);
   for_each_index(
@@ -139,7 +142,7 @@ McResult run_mc(const Scenario& scenario, const MultiOptions& o, const MultiRunP
   return r;
 }
 
-void write_runs_csv(const std::filesystem::path& path, const MultiOptions& o, const char* associator,
+void write_runs_csv(const std::filesystem::path& path, const RunOptions& o, const char* associator,
                     const std::vector<MultiTargetRunMetrics>& runs, bool append) {
   std::ofstream f(path, append ? std::ios::app : std::ios::trunc);
   if (!append) {
@@ -180,23 +183,22 @@ void write_steps_csv(const std::filesystem::path& path, const ScenarioInfo& info
 /// The runs' parameters: the options' associator (GNN by default with more
 /// than one target), filter, scoring and budget over `options`, the radar
 /// tracker's settings already resolved.
-MultiRunParams multi_params(const MultiOptions& o, const ScenarioInfo& info, const FilterOptions& options) {
-  if (info.targets < 2) throw std::invalid_argument("'" + info.name + "' is a single-target scenario: use `run`");
+MultiRunParams multi_params(const RunOptions& o, const ScenarioInfo& info) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  if (!(o.cutoff_m > 0.0) || !(o.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
-  if (o.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
+  if (!(o.kind.cutoff_m > 0.0) || !(o.kind.order >= 1.0)) throw std::invalid_argument("--cutoff must be positive and --order at least 1");
+  if (o.kind.persistence_steps < 1) throw std::invalid_argument("--persistence must be at least 1");
   MultiRunParams config;
-  config.associator = o.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.associator);
-  config.filter = multi_filter_by_name(o.filter);
-  config.options = options;
-  if (o.gate_tentative) config.gate_tentative = gate_option(*o.gate_tentative, "--gate-tentative");
-  config.spa = SpaParams{o.cutoff_m, o.order};
-  config.persistence_steps = o.persistence_steps;
-  config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  config.associator = o.kind.associator.empty() ? default_multi_associator(info) : multi_associator_by_name(o.kind.associator);
+  config.filter = multi_filter_by_name(o.filter.filter);
+  config.options = o.filter.options;
+  if (o.kind.gate_tentative) config.gate_tentative = gate_option(*o.kind.gate_tentative, "--gate-tentative");
+  config.spa = SpaParams{o.kind.cutoff_m, o.kind.order};
+  config.persistence_steps = o.kind.persistence_steps;
+  config.budget_ns = budget_ns_from_us(o.filter.budget_us);
   return config;
 }
 
-int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRunParams& config) {
+int report_multi(const RunOptions& o, const Scenario& scenario, const MultiRunParams& config) {
   const ScenarioInfo& info = scenario.info();
   const std::filesystem::path dir =
       o.out.empty() ? std::filesystem::path("results") / (info.name + "-multi") : std::filesystem::path(o.out);
@@ -213,7 +215,7 @@ int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRun
   std::printf("%s: %zu targets, %zu runs (seeds %llu..%llu), %s, %u-of-%u, max speed %g m/s, %s, c %g m, p %g\n",
               info.name.c_str(), info.targets, o.runs, static_cast<unsigned long long>(o.seed),
               static_cast<unsigned long long>(o.seed + o.runs - 1), filter, unsigned{p.confirm_m},
-              unsigned{p.confirm_n}, p.max_speed_mps, multi_associator_name(config.associator), o.cutoff_m, o.order);
+              unsigned{p.confirm_n}, p.max_speed_mps, multi_associator_name(config.associator), o.kind.cutoff_m, o.kind.order);
   const Summary s = summarise(main.runs);
   print_summary(multi_associator_name(config.associator), s);
   write_runs_csv(dir / "multi_runs.csv", o, multi_associator_name(config.associator), main.runs, false);
@@ -221,7 +223,7 @@ int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRun
       {multi_associator_name(config.associator), &main.runs}};
   McResult oracle;
   std::optional<Summary> so;
-  if (o.compare_oracle && config.associator != MultiAssociator::kOracle) {
+  if (o.kind.compare_oracle && config.associator != MultiAssociator::kOracle) {
     MultiRunParams oc = config;
     oc.associator = MultiAssociator::kOracle;
     oracle = run_mc(scenario, o, oc);
@@ -253,43 +255,6 @@ int report_multi(const MultiOptions& o, const Scenario& scenario, const MultiRun
 
 }  // namespace
 
-CLI::App* add_multi_command(CLI::App& app, MultiOptions& o) {
-  CLI::App* cmd = app.add_subcommand("multi", "Multi-target Monte Carlo (crossing, raid, formation-split): OSPA, GOSPA, swaps, false tracks");
-  cmd->add_option("--scenario,-s", o.scenario, "crossing, raid or formation-split")->required();
-  cmd->add_option("--runs,-n", o.runs, "Monte Carlo runs")->capture_default_str();
-  cmd->add_option("--seed", o.seed, "Seed of run 0; run i uses seed + i")->capture_default_str();
-  cmd->add_option("--jobs,-j", o.jobs, "Worker threads (results do not depend on it)")->capture_default_str();
-  cmd->add_option("--out,-o", o.out, "Output directory (default results/<scenario>-multi)");
-  cmd->add_option("--associator", o.associator, "nn, gnn or oracle (default: gnn for more than one target)");
-  cmd->add_option("--filter,-f", o.filter, "ekf-ca or imm (CV/CA/CT, docs/imm.md; its keys are imm.KEY)")
-      ->capture_default_str();
-  cmd->add_flag("--compare-oracle", o.compare_oracle, "Also run the oracle associator on the same seeds");
-  cmd->add_option("--qj", o.qj, "EKF-CA white-jerk PSD, m^2/s^5 (default 1.6)");
-  cmd->add_option("--config", o.config,
-                  "JSON file of tracker parameters by key (`list --settings`, docs/parameters.md)");
-  cmd->add_option("--set", o.sets,
-                  "KEY=VALUE, repeatable: one tracker parameter, e.g. confirm_m=5 (`list --settings`)");
-  cmd->add_option("--gate-tentative", o.gate_tentative, "Gate probability of tentative tracks (default 0.999)");
-  cmd->add_option("--cutoff", o.cutoff_m, "OSPA/GOSPA cut-off c, m")->capture_default_str();
-  cmd->add_option("--order", o.order, "OSPA/GOSPA order p")->capture_default_str();
-  cmd->add_option("--persistence", o.persistence_steps, "Steps a changed assignment must hold to count as a swap")
-      ->capture_default_str();
-  cmd->add_option("--budget-us", o.budget_us, "Step budget for overrun counting, us")->capture_default_str();
-  cmd->add_flag("!--no-plots", o.plots, "Do not run the plot script");
-  return cmd;
-}
-
-int cmd_multi(const MultiOptions& o) {
-  const auto scenario = make_scenario(o.scenario);
-  FilterOptions options;
-  std::vector<Setting> settings;
-  if (!o.config.empty()) settings = read_config_file(o.config);
-  for (const std::string& s : o.sets) settings.push_back(parse_setting(s, "--set"));
-  apply_settings(settings, options);
-  if (o.qj.has_value()) options.qj = o.qj;
-  return report_multi(o, *scenario, multi_params(o, scenario->info(), options));
-}
-
 std::vector<std::string> multi_target_replay_refuses(const ReplayOptions& o) {
   static const char* const kNotForMulti[] = {"--ungated", "--loss-threshold-m", "--first-scored-step",
                                              "--asterix-out", "--sac", "--sic"};
@@ -305,27 +270,21 @@ std::vector<std::string> multi_target_replay_refuses(const ReplayOptions& o) {
 
 int replay_multi_target(const ReplayOptions& r, const FilterChoice& filter, StreamInput input,
                         const std::vector<std::vector<TruthSample>>& targets, const std::string& source) {
-  MultiOptions o;  // multi's defaults: GNN, c 500 m, p 2, swaps held 3 steps
+  RunOptions o;  // run's defaults for several targets: c 500 m, p 2, swaps held 3 steps
   o.runs = 1;
   o.out = r.out;
   o.plots = r.plots;
-  o.filter = filter.filter;
-  o.budget_us = filter.budget_us;
-  MultiRunParams config;
-  config.associator = MultiAssociator::kGlobalNearestNeighbour;
-  config.filter = multi_filter_by_name(o.filter);
-  config.options = filter.options;
-  config.spa = SpaParams{o.cutoff_m, o.order};
-  config.persistence_steps = o.persistence_steps;
-  config.budget_ns = static_cast<std::uint64_t>(std::llround(o.budget_us * 1000.0));
+  o.filter = filter;
+  o.kind.associator = "gnn";  // as the board's tracker: GNN even if the truth names one target
+  ScenarioInfo info;
+  info.name = "replay";
+  info.targets = targets.size();
+  const MultiRunParams config = multi_params(o, info);
   const StreamRunResult stream = run_multi_stream(config, std::move(input));
   std::size_t without_truth = 0;
   const std::vector<MultiTargetStep> steps = multi_target_steps_at_times(targets, stream, without_truth);
   const std::vector<MultiTargetRunMetrics> runs{compute_multi_target_metrics(steps, config.spa, config.persistence_steps)};
 
-  ScenarioInfo info;
-  info.name = "replay";
-  info.targets = targets.size();
   info.steps = steps.size();
   info.frame_period_s = steps.size() > 1 ? (steps.back().t_s - steps.front().t_s) / static_cast<double>(steps.size() - 1) : 0.0;
   const std::filesystem::path dir(o.out);
@@ -338,7 +297,7 @@ int replay_multi_target(const ReplayOptions& r, const FilterChoice& filter, Stre
   std::printf("replay %s: %zu targets in %s; scored %zu frames (%zu decoded frames at a time without every "
               "target's truth), %s, %s, c %g m, p %g\n",
               source.c_str(), targets.size(), r.truth.c_str(), steps.size(), without_truth, name.c_str(),
-              multi_associator_name(config.associator), o.cutoff_m, o.order);
+              multi_associator_name(config.associator), o.kind.cutoff_m, o.kind.order);
   print_summary(multi_associator_name(config.associator), s);
   nlohmann::json entry = summary_entry(o, info, config, name.c_str(), s, nullptr);
   entry.erase("base_seed");
@@ -355,13 +314,11 @@ int replay_multi_target(const ReplayOptions& r, const FilterChoice& filter, Stre
 
 std::vector<std::uint64_t> multi_target_step_times(const TimingOptions& t, std::string& what) {
   const auto scenario = make_scenario(t.scenario);
-  MultiOptions o;
-  o.scenario = t.scenario;
+  RunOptions o;
   o.runs = t.runs;
   o.seed = t.seed;
-  o.filter = t.filter.filter;
-  o.budget_us = t.filter.budget_us;
-  const MultiRunParams config = multi_params(o, scenario->info(), t.filter.options);
+  o.filter = t.filter;
+  const MultiRunParams config = multi_params(o, scenario->info());
   std::vector<std::uint64_t> step_ns;
   for (std::size_t i = 0; i < o.runs; ++i) {
     const MultiRunDetail d = run_multi_once(*scenario, o.seed + i, config);
@@ -378,18 +335,10 @@ int run_multi_target_scenario(const RunOptions& r) {
   if (!r.asterix_out.path.empty()) {
     throw std::invalid_argument("--asterix-out: a run of a multi-target scenario writes no CAT062");
   }
-  const auto scenario = make_scenario(r.scenario);
-  MultiOptions o = options_of_run<MultiOptions>(r);
-  o.filter = r.filter.filter;
-  o.associator = r.kind.associator;
-  o.gate_tentative = r.kind.gate_tentative;
-  o.compare_oracle = r.kind.compare_oracle;
-  o.cutoff_m = r.kind.cutoff_m;
-  o.order = r.kind.order;
-  o.persistence_steps = r.kind.persistence_steps;
   // main() has resolved --config, --set and the options of their own into
-  // r.filter.options (o.config and o.sets are not read again).
-  return report_multi(o, *scenario, multi_params(o, scenario->info(), r.filter.options));
+  // r.filter.options.
+  const auto scenario = make_scenario(r.scenario);
+  return report_multi(r, *scenario, multi_params(r, scenario->info()));
 }
 
 }  // namespace kestrel::sim::cli
