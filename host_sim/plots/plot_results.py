@@ -14,8 +14,8 @@
       (from the truth of S.csv) marked along the top, and the truth's turn
       rate and dv/dt below
   plot_results.py gospa --steps multi_steps.csv --out P.png [--title X]
-      mean GOSPA and OSPA per step of each associator `kestrel-sim run` of a multi-target scenario
-      ran (e.g. GNN and the oracle)
+      mean GOSPA and OSPA per step of each associator that `kestrel-sim run`
+      of a multi-target scenario ran (e.g. GNN and the oracle)
 
 Reads only the CSV/JSON files kestrel-sim writes (csv and json modules, no
 pandas). If matplotlib is missing it prints a warning and exits 1: plots are
