@@ -82,7 +82,12 @@ struct S1Truth {
 /// bearing wrapped to (-pi, pi].
 inline Eigen::Vector2d polar_measurement(double x, double y, double sr, double sb,
                                          NormalGenerator<double>& n) {
-  Eigen::Vector2d z(std::hypot(x, y) + sr * n(), std::atan2(y, x) + sb * n());
+  // The bearing's draw first, in its own statement: as two constructor
+  // arguments the draws were unsequenced, and the recorded hashes (CRPF)
+  // hold the order GCC gave them, right to left; clang goes left to right.
+  const double bearing_noise = sb * n();
+  const double range_noise = sr * n();
+  Eigen::Vector2d z(std::hypot(x, y) + range_noise, std::atan2(y, x) + bearing_noise);
   z(1) = std::remainder(z(1), 2.0 * kPi);
   return z;
 }

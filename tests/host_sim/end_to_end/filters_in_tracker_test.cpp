@@ -141,9 +141,15 @@ TrackedRun track_with(const WireRun& run) {
   return out;
 }
 
+/// Ekf with its default update form, as a two-parameter template: clang 14
+/// does not match Ekf itself (a third, non-type parameter with a default)
+/// to `template <class, class> class` without -frelaxed-template-template-args.
+template <class Motion, class Measurement>
+using DefaultEkf = kestrel::Ekf<Motion, Measurement>;
+
 template <template <class, class> class FilterT, class S>
 void check_holds(const char* name, const WireRun& wire) {
-  const TrackedRun ekf = track_with<kestrel::Ekf, S>(wire);
+  const TrackedRun ekf = track_with<DefaultEkf, S>(wire);
   const TrackedRun run = track_with<FilterT, S>(wire);
   const int frames = static_cast<int>(wire.frames.size());
   INFO(name << " on " << wire.name << ": first report at frame " << run.first_report << ", "
