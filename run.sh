@@ -4,8 +4,9 @@
 #   bash run.sh sim    install what the simulator needs, build kestrel-sim
 #                      alone (host-sim preset), run the main job
 #                      -> results/report.md
-#   bash run.sh test   install everything, build host-release, run the
-#                      whole CTest suite (including the cross builds)
+#   bash run.sh test   install everything, build host-release (clang, with
+#                      core's rules also checked by g++), run the whole
+#                      CTest suite (including the GCC cross builds)
 # .ci/run calls `bash run.sh test`.
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -52,26 +53,31 @@ install_deps() {
 
 njobs() { nproc 2>/dev/null || echo 2; }
 
+# configure_clang_preset NAME: `cmake --preset NAME` of a preset that builds
+# with clang. A build/NAME that another compiler configured (GCC, before the
+# preset named clang) is configured afresh: on a compiler switch CMake drops
+# the cache and, with it, the preset's settings.
+configure_clang_preset() {
+  local fresh=()
+  if [[ -f build/$1/CMakeCache.txt ]] &&
+    ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$' "build/$1/CMakeCache.txt"; then
+    fresh=(--fresh)
+  fi
+  cmake --preset "$1" "${fresh[@]}" >/dev/null
+}
+
 build_host() {
-  cmake --preset host-release >/dev/null
+  configure_clang_preset host-release
   cmake --build --preset host-release -j "$(njobs)"
 }
 
 case "${1:-}" in
   sim)
     install_deps "${SIM_PACKAGES[@]}"
-    # A build/host-sim that another compiler configured (GCC, before the
-    # preset named clang): on a compiler switch CMake drops the cache and,
-    # with it, the preset's settings, so configure it afresh instead.
-    fresh=()
-    if [[ -f build/host-sim/CMakeCache.txt ]] &&
-      ! grep -q '^CMAKE_CXX_COMPILER:.*clang++$' build/host-sim/CMakeCache.txt; then
-      fresh=(--fresh)
-    fi
-    cmake --preset host-sim "${fresh[@]}" >/dev/null
+    configure_clang_preset host-sim
     sim=build/host-sim/host_sim/kestrel-sim
-    # CI builds host_sim with GCC only: should clang ever refuse what GCC
-    # takes, the main job still runs, built with GCC.
+    # Should this machine's clang fail where CI's did not (another version,
+    # a broken install), the main job still runs, built with GCC.
     if ! cmake --build --preset host-sim -j "$(njobs)"; then
       echo "run.sh: clang could not build kestrel-sim (above); building it with GCC instead" >&2
       cmake --preset host-sim -B build/host-sim-gcc -DCMAKE_C_COMPILER=gcc -DCMAKE_CXX_COMPILER=g++ >/dev/null

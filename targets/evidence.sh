@@ -14,7 +14,7 @@
 # Then it regenerates the tables of docs/footprint.md from
 # build/<board>/evidence/*.json (targets/common/footprint_table.py).
 #
-# --host-instructions also builds host-release's kestrel-instr-count and
+# --host-instructions also builds host-release-gcc's kestrel-instr-count and
 # runs the instruction-count budget check of host_sim/bench (docs/performance.md:
 # callgrind instructions per step and path class, failing over budget by
 # more than 2 %), and puts its table into docs/footprint.md as well.
@@ -58,12 +58,12 @@ if ((host_instructions)); then
   script=host_sim/bench/check_instruction_budgets.py
   if [[ -f $script ]]; then
     echo "== host instruction counts (callgrind, $script)"
-    cmake --preset host-release >/dev/null
-    cmake --build --preset host-release --target kestrel-instr-count -j "$jobs"
-    mkdir -p build/host-release/evidence
-    python3 "$script" --exe build/host-release/host_sim/bench/kestrel-instr-count \
-      | tee build/host-release/evidence/host-instructions.txt
-    host_args=(--host-instructions build/host-release/evidence/host-instructions.txt)
+    cmake --preset host-release-gcc >/dev/null
+    cmake --build --preset host-release-gcc --target kestrel-instr-count -j "$jobs"
+    mkdir -p build/host-release-gcc/evidence
+    python3 "$script" --exe build/host-release-gcc/host_sim/bench/kestrel-instr-count \
+      | tee build/host-release-gcc/evidence/host-instructions.txt
+    host_args=(--host-instructions build/host-release-gcc/evidence/host-instructions.txt)
   else
     echo "evidence.sh: $script is not there: no instruction counts" >&2
   fi

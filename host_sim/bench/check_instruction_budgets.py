@@ -8,7 +8,8 @@ measured calls), prints instructions per step for every filter and path
 class, and fails when a path exceeds its budget in instruction_budgets.json
 by more than the recorded tolerance (2 %). Counts are deterministic for a
 given binary; they depend on the compiler and flags, so the budgets are
-recorded from the host-release preset (-O2 -DNDEBUG, no debug info).
+recorded per compiler (instruction_budgets.json: g++, host-release-gcc;
+instruction_budgets.clang.json: clang, host-release; -O2 -DNDEBUG, no debug info).
 
   check_instruction_budgets.py --exe build/host-release/host_sim/bench/kestrel-instr-count
   ... --update          rewrite the budgets with the measured counts

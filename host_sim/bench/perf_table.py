@@ -4,8 +4,8 @@
 check_instruction_budgets.py's runner) and CPU ns per step (kestrel-bench),
 dense and structured side by side, as Markdown.
 
-  perf_table.py --instr build/host-release/host_sim/bench/kestrel-instr-count \\
-                --bench build/host-release/host_sim/bench/kestrel-bench [--min-time 0.2]
+  perf_table.py --instr build/host-release-gcc/host_sim/bench/kestrel-instr-count \\
+                --bench build/host-release-gcc/host_sim/bench/kestrel-bench [--min-time 0.2]
 
 Instruction counts are exact and repeatable; ns are the median over
 --repetitions runs of Google Benchmark's CPU time (thread CPU time for the
