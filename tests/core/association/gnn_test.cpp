@@ -59,7 +59,9 @@ SCENARIO("GNN finds the optimal assignment that brute force finds", "[gnn]") {
   G gnn;
   int mismatches = 0, invalid = 0, with_misses = 0;
   for (int trial = 0; trial < 3000; ++trial) {
-    G::CostMatrix c(rows(rng), cols(rng));
+    const auto n_cols = cols(rng);  // own statements: argument order is unspecified
+    const auto n_rows = rows(rng);
+    G::CostMatrix c(n_rows, n_cols);
     for (int i = 0; i < c.rows(); ++i) {
       for (int j = 0; j < c.cols(); ++j) {
         const double r = coin(rng);

@@ -109,7 +109,9 @@ SCENARIO("in double the sequential whitened update equals the batch update", "[e
       REQUIRE(batch.reset(x, P) == Status::kOk);
       REQUIRE(seq.reset(x, P) == Status::kOk);
       const Batch::MeasVec zh = batch.measurement().predict(x);
-      const Batch::MeasVec z(zh(0) + 30 * n(g), zh(1) + 0.01 * n(g));
+      const double n_bearing = n(g);  // own statements: argument order is unspecified
+      const double n_range = n(g);
+      const Batch::MeasVec z(zh(0) + 30 * n_range, zh(1) + 0.01 * n_bearing);
       const auto in_b = batch.innovation(z);
       const auto in_s = seq.innovation(z);
       REQUIRE(batch.update(z) == Status::kOk);
@@ -148,7 +150,9 @@ SCENARIO("in double the sequential whitened update equals the batch update", "[e
     for (int k = 0; k < 20; ++k) {
       REQUIRE(batch.predict(0.5) == Status::kOk);
       REQUIRE(seq.predict(0.5) == Status::kOk);
-      const Batch::MeasVec z = batch.measurement().predict(batch.x()) + Batch::MeasVec(5 * n(g), 4 * n(g));
+      const double n_bearing = n(g);  // own statements: argument order is unspecified
+      const double n_range = n(g);
+      const Batch::MeasVec z = batch.measurement().predict(batch.x()) + Batch::MeasVec(5 * n_range, 4 * n_bearing);
       REQUIRE(batch.update(z) == Status::kOk);
       REQUIRE(seq.update(z) == Status::kOk);
     }

@@ -303,8 +303,16 @@ SCENARIO("frames of clutter alone confirm no track within N frames", "[pcl][trac
     std::uniform_real_distribution<double> rb(0.0, 3000.0), fd(-125.0, 125.0), ridge(-0.99, 0.99);
     for (int k = 0; k < kParams.confirm_n; ++k) {
       Scan s = scan_at(k);
-      for (int j = 0; j < 21; ++j) add(s, cand(rb(rng), fd(rng)));
-      for (int j = 0; j < 3; ++j) add(s, cand(rb(rng), ridge(rng)));
+      // Each draw in its own statement: the order of a call's arguments is
+      // unspecified, so the samples would depend on the compiler.
+      for (int j = 0; j < 21; ++j) {
+        const double f = fd(rng);
+        add(s, cand(rb(rng), f));
+      }
+      for (int j = 0; j < 3; ++j) {
+        const double f = ridge(rng);
+        add(s, cand(rb(rng), f));
+      }
       REQUIRE(tracker.step(s) == Status::kOk);
       started += tracker.last_step().seeded;
       confirmed += confirmed_count(tracker);
@@ -373,7 +381,10 @@ SCENARIO("PCL step allocates nothing with full frames of clutter and a target", 
   static Scan scans[120];
   for (int k = 0; k < 120; ++k) {
     scans[k] = scan_at(k);
-    for (std::size_t j = 0; j + 1 < kCandidates; ++j) add(scans[k], cand(rb(rng), fd(rng)));
+    for (std::size_t j = 0; j + 1 < kCandidates; ++j) {
+      const double f = fd(rng);  // own statement: argument order is unspecified
+      add(scans[k], cand(rb(rng), f));
+    }
     add(scans[k], target_at(k) + kestrel::Vec<double, 2>(0.0, 0.0));
   }
   bool all_ok = true;

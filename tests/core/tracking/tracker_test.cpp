@@ -205,7 +205,8 @@ SCENARIO("step allocates nothing, with clutter and table overflow", "[tracker][a
     scans[k] = scan_at<T>(k * 500000LL);
     scans[k].z[0] = plot_at<double>(0.5 * k);
     for (std::size_t j = 1; j < T::Scan::kMaxMeasurements; ++j) {
-      scans[k].z[j] = kestrel::Vec<double, 2>(range(rng), bearing(rng));
+      const double b = bearing(rng);  // own statement: argument order is unspecified
+      scans[k].z[j] = kestrel::Vec<double, 2>(range(rng), b);
     }
     scans[k].count = T::Scan::kMaxMeasurements;
   }
