@@ -157,14 +157,17 @@ void write_runs_csv(const std::filesystem::path& path, const RunOptions& o, cons
   }
 }
 
+/// `times_s`: each step's time (a replay's frames); empty: k x the
+/// scenario's frame period.
 void write_steps_csv(const std::filesystem::path& path, const ScenarioInfo& info,
-                     const std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>>& sets) {
+                     const std::vector<std::pair<const char*, const std::vector<MultiTargetRunMetrics>*>>& sets,
+                     const std::vector<double>& times_s = {}) {
   std::ofstream f(path);
   f << "step,time_s";
   for (const auto& [name, runs] : sets) f << ",gospa_m_" << name << ",ospa_m_" << name;
   f << '\n';
   for (std::size_t k = 0; k < info.steps; ++k) {
-    f << k << ',' << static_cast<double>(k) * info.frame_period_s;
+    f << k << ',' << (k < times_s.size() ? times_s[k] : static_cast<double>(k) * info.frame_period_s);
     for (const auto& [name, runs] : sets) {
       double g = 0.0, os = 0.0;
       std::size_t n = 0;
@@ -286,13 +289,14 @@ int replay_multi_target(const ReplayOptions& r, const FilterChoice& filter, Stre
   const std::vector<MultiTargetRunMetrics> runs{compute_multi_target_metrics(steps, config.spa, config.persistence_steps)};
 
   info.steps = steps.size();
-  info.frame_period_s = steps.size() > 1 ? (steps.back().t_s - steps.front().t_s) / static_cast<double>(steps.size() - 1) : 0.0;
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   const std::string name = multi_filter_name(config.filter);
   const std::filesystem::path tracks_csv = dir / (name + "_tracks.csv");
   write_track_csv(tracks_csv, stream);
-  write_steps_csv(dir / "multi_steps.csv", info, {{multi_associator_name(config.associator), &runs}});
+  std::vector<double> times_s;
+  for (const MultiTargetStep& st : steps) times_s.push_back(st.t_s);
+  write_steps_csv(dir / "multi_steps.csv", info, {{multi_associator_name(config.associator), &runs}}, times_s);
   const Summary s = summarise(runs);
   std::printf("replay %s: %zu targets in %s; scored %zu frames (%zu decoded frames at a time without every "
               "target's truth), %s, %s, c %g m, p %g\n",

@@ -540,6 +540,26 @@ elseif(CHECK STREQUAL "replay_multi_target")
   if(NOT targets EQUAL 2 OR NOT matched EQUAL 61 OR NOT gospa MATCHES "^[0-9]")
     message(FATAL_ERROR "replay summary: targets ${targets}, matched ${matched}, GOSPA '${gospa}'")
   endif()
+  # The replay's multi_steps.csv carries each scored frame's own time: the
+  # plot CSV without its frames at 10-19 s leaves step 10 at 20 s (k times
+  # the mean spacing would say 12 s).
+  file(STRINGS ${OUT}/crossing.plots.csv plot_lines)
+  list(FILTER plot_lines EXCLUDE REGEX "^1[0-9]\\.")
+  list(JOIN plot_lines "\n" gapped)
+  file(WRITE ${OUT}/gapped.plots.csv "${gapped}\n")
+  execute_process(COMMAND ${SIM} replay --csv ${OUT}/gapped.plots.csv --truth ${OUT}/crossing.truth.csv --no-plots
+                          --out ${OUT}/gapped
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(STRINGS ${OUT}/gapped/multi_steps.csv step_lines)
+  list(LENGTH step_lines n_steps)
+  if(NOT rc EQUAL 0 OR NOT n_steps EQUAL 52)
+    message(FATAL_ERROR "replay of the gapped plot CSV: ${n_steps} lines in multi_steps.csv (${rc}):\n${out}${err}")
+  endif()
+  list(GET step_lines 10 step9)
+  list(GET step_lines 11 step10)
+  if(NOT step9 MATCHES "^9,9," OR NOT step10 MATCHES "^10,20,")
+    message(FATAL_ERROR "multi_steps.csv of the gapped replay: '${step9}', '${step10}' (want steps 9 at 9 s, 10 at 20 s)")
+  endif()
   execute_process(COMMAND ${SIM} replay --stream ${OUT}/crossing.stream --truth ${OUT}/crossing.truth.csv --ungated
                           --no-plots --out ${OUT}/refused
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
