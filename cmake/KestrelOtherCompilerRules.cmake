@@ -28,8 +28,7 @@ foreach(src ${_kestrel_rules_sources})
             -I${PROJECT_SOURCE_DIR}/core/include -I${PROJECT_SOURCE_DIR}/hal/include -I${KESTREL_GENERATED_INCLUDE_DIR}
             -isystem ${EIGEN3_INCLUDE_DIR}
             -DEIGEN_NO_MALLOC -DEIGEN_GEMM_TO_COEFFBASED_THRESHOLD=4096 -DNDEBUG -ffp-contract=off
-            -fno-exceptions -fno-rtti -fno-math-errno -Wall -Wextra -Wpedantic -Wconversion -Wsign-conversion
-            -Wdouble-promotion -Wold-style-cast -Wshadow -Wfloat-equal -Werror ${src}
+            -fno-exceptions -fno-rtti -fno-math-errno ${KESTREL_FIRMWARE_WARNINGS} -Wold-style-cast -Werror ${src}
     COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
     DEPENDS ${src}
     IMPLICIT_DEPENDS CXX ${src}

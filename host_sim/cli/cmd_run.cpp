@@ -23,16 +23,6 @@
 namespace kestrel::sim::cli {
 
 namespace {
-MonteCarloParams config_from(const FilterChoice& f, std::size_t runs, std::uint64_t seed, unsigned jobs) {
-  MonteCarloParams c;
-  c.runs = runs;
-  c.base_seed = seed;
-  c.jobs = jobs;
-  c.budget_ns = budget_ns_from_us(f.budget_us);
-  c.options = f.options;
-  return c;
-}
-
 void print_files(const std::filesystem::path& dir, const std::string& filter, const ScenarioReport& r) {
   const RunFileNames n = run_file_names(dir, filter);
   std::printf("wrote %s, %s, %s, %s", n.tracks_csv.c_str(), n.steps_csv.c_str(), n.runs_csv.c_str(),
@@ -109,7 +99,8 @@ int cmd_run(const RunOptions& o) {
     return run_multi_target_scenario(o);
   }
   check_kind_options(o.kind, {}, "scenario '" + o.scenario + "' is a single-target radar scenario");
-  const MonteCarloParams config = config_from(o.filter, o.runs, o.seed, o.jobs);
+  MonteCarloParams config = monte_carlo_params<MonteCarloParams>(o);
+  config.options = o.filter.options;
   const std::string scenario = made->info().name;
   const std::filesystem::path dir = o.out.empty() ? std::filesystem::path("results") / scenario : std::filesystem::path(o.out);
   const ScenarioReport report = run_scenario_report(scenario, o.filter.filter, config, dir, o.plots);

@@ -4,7 +4,6 @@
 // (association accuracy, coverage after confirmation, false confirmed
 // tracks, Rb/dRb RMSE, time to confirmation); its files are listed in
 // report/pcl_files.hpp.
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -40,14 +39,8 @@ int run_pcl(const RunOptions& o) {
   const std::vector<Setting> settings = read_settings(o.filter.config, o.filter.sets);
   apply_pcl_settings(settings, params);
   if (o.kind.gate_tentative) params.gate_tentative = gate_option(*o.kind.gate_tentative, "--gate-tentative");
-  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  if (!(o.filter.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
 
-  PclMonteCarloParams config;
-  config.runs = o.runs;
-  config.base_seed = o.seed;
-  config.jobs = o.jobs;
-  config.budget_ns = budget_ns_from_us(o.filter.budget_us);
+  auto config = monte_carlo_params<PclMonteCarloParams>(o);
   config.policies.associator =
       policy_by_name(kAssociatorNames, o.kind.associator.empty() ? "nn" : o.kind.associator, "associator");
   config.policies.manager =

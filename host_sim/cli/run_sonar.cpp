@@ -5,7 +5,6 @@
 // against the true outliers); its files are listed in report/sonar_files.hpp.
 // `sonar-study`: every variant with the paper's gate (k = 2), k = 3 and no
 // gate, and the comparison table (sonar_study.md / .json).
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -52,23 +51,12 @@ std::string gate_label(const SonarTrackerParams& p) {
   return s.empty() ? "no gate" : s;
 }
 
-SonarMonteCarloParams mc_config(const RunOptions& o) {
-  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  if (!(o.filter.budget_us > 0.0)) throw std::invalid_argument("--budget-us must be positive");
-  SonarMonteCarloParams c;
-  c.runs = o.runs;
-  c.base_seed = o.seed;
-  c.jobs = o.jobs;
-  c.budget_ns = budget_ns_from_us(o.filter.budget_us);
-  return c;
-}
-
 }  // namespace
 
 int run_sonar(const RunOptions& o) {
   const SonarScenarioParams scenario = sonar_config_by_name(o.scenario);
   const SonarTrackerParams params = params_from(o, scenario);
-  const SonarMonteCarloParams config = mc_config(o);
+  const auto config = monte_carlo_params<SonarMonteCarloParams>(o);
   const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
   const SonarSummary s = summarise_sonar(mc.runs, config.budget_ns);
 
@@ -117,7 +105,7 @@ int run_sonar(const RunOptions& o) {
 }
 
 int cmd_sonar_study(const RunOptions& o) {
-  const SonarMonteCarloParams config = mc_config(o);
+  const auto config = monte_carlo_params<SonarMonteCarloParams>(o);
   const std::filesystem::path dir =
       o.out.empty() ? std::filesystem::path("results") / "sonar_study" : std::filesystem::path(o.out);
   std::filesystem::create_directories(dir);

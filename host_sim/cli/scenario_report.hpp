@@ -4,11 +4,14 @@
 // `suite`.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
+#include "cli/commands.hpp"
 #include "montecarlo/monte_carlo.hpp"
 #include "report/results_table.hpp"
 
@@ -32,5 +35,20 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
 
 /// Step budget in ns from microseconds (CLI unit).
 std::uint64_t budget_ns_from_us(double budget_us);
+
+/// run's --runs, --seed, --jobs and --budget-us as the Monte Carlo
+/// parameters of its scenario's kind (MonteCarloParams, PclMonteCarloParams
+/// and SonarMonteCarloParams name them alike). Throws std::invalid_argument
+/// for 0 runs or a budget that is not positive.
+template <class Params>
+Params monte_carlo_params(const RunOptions& o) {
+  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
+  Params c;
+  c.runs = o.runs;
+  c.base_seed = o.seed;
+  c.jobs = o.jobs;
+  c.budget_ns = budget_ns_from_us(o.filter.budget_us);
+  return c;
+}
 
 }  // namespace kestrel::sim::cli

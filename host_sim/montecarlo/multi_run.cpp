@@ -31,6 +31,15 @@ StreamRunResult run_with(const MultiRunParams& config, StreamInput input,
   return run_stream(*tracker, std::move(input), config.budget_ns);
 }
 
+/// The frame's confirmed tracks into the step that scores it.
+void add_confirmed_tracks(const FrameOutcome& frame, MultiTargetStep& s) {
+  for (const host::TrackRow& row : frame.tracks) {
+    if (!row.confirmed) continue;
+    s.track_ids.push_back(row.track_id);
+    s.tracks.push_back(Position2{row.x_m, row.y_m});
+  }
+}
+
 }  // namespace
 
 MultiAssociator multi_associator_by_name(const std::string& name) {
@@ -70,11 +79,7 @@ std::vector<MultiTargetStep> multi_target_steps(const ScenarioRun& run, const St
     MultiTargetStep s;
     s.t_s = run.frames[k].t_s;
     for (const auto& target : run.targets) s.truths.push_back(Position2{target[k].x_m, target[k].y_m});
-    for (const host::TrackRow& row : stream.frames[k].tracks) {
-      if (!row.confirmed) continue;
-      s.track_ids.push_back(row.track_id);
-      s.tracks.push_back(Position2{row.x_m, row.y_m});
-    }
+    add_confirmed_tracks(stream.frames[k], s);
     steps.push_back(std::move(s));
   }
   return steps;
@@ -114,11 +119,7 @@ std::vector<MultiTargetStep> multi_target_steps_at_times(const std::vector<std::
     MultiTargetStep s;
     s.t_s = static_cast<double>(f.t_us) * 1e-6;
     s.truths = it->second;
-    for (const host::TrackRow& row : f.tracks) {
-      if (!row.confirmed) continue;
-      s.track_ids.push_back(row.track_id);
-      s.tracks.push_back(Position2{row.x_m, row.y_m});
-    }
+    add_confirmed_tracks(f, s);
     steps.push_back(std::move(s));
   }
   return steps;
