@@ -5,106 +5,56 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <limits>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
+#include "filters/parameter_key.hpp"
 #include "filters/sensor_settings.hpp"
 
 namespace kestrel::sim {
 
 namespace {
 
-/// A key of RadarTrackerParams: its accessors, range and meaning.
-struct RadarKey {
-  const char* key;
-  double lo;          ///< Smallest value (exclusive when lo_open).
-  bool lo_open;
-  double hi;          ///< Largest value (inclusive).
-  bool integer;       ///< The field is an integer: the value must be whole.
-  double (*get)(const RadarTrackerParams&);
-  void (*set)(RadarTrackerParams&, double);
-  const char* meaning;
-};
+using RadarKey = ParameterKey<RadarTrackerParams>;
+using P = RadarTrackerParams;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr KeyRange kPositive{0.0, true};
 // The largest whole number a double holds exactly, a bound for the us fields.
-constexpr double kMaxWhole = 9007199254740992.0;
+constexpr KeyRange kPositiveMicroseconds{0.0, true, 9007199254740992.0};
 
 // clang-format off
 const RadarKey kRadarKeys[] = {
-  {"sigma_range_m", 0.0, true, kInf, false,
-   [](const RadarTrackerParams& p) { return p.sigma_range_m; },
-   [](RadarTrackerParams& p, double v) { p.sigma_range_m = v; },
-   "range noise sigma of the sensor, m"},
-  {"sigma_bearing_rad", 0.0, true, kInf, false,
-   [](const RadarTrackerParams& p) { return p.sigma_bearing_rad; },
-   [](RadarTrackerParams& p, double v) { p.sigma_bearing_rad = v; },
-   "bearing noise sigma of the sensor, rad"},
-  {"max_speed_mps", 0.0, true, kInf, false,
-   [](const RadarTrackerParams& p) { return p.max_speed_mps; },
-   [](RadarTrackerParams& p, double v) { p.max_speed_mps = v; },
-   "two-point initiation refuses plot pairs faster than this, m/s"},
-  {"init_accel_sigma_mps2", 0.0, true, kInf, false,
-   [](const RadarTrackerParams& p) { return p.init_accel_sigma_mps2; },
-   [](RadarTrackerParams& p, double v) { p.init_accel_sigma_mps2 = v; },
-   "initial acceleration sigma of a new track, m/s^2"},
-  {"max_range_m", 0.0, true, kInf, false,
-   [](const RadarTrackerParams& p) { return p.max_range_m; },
-   [](RadarTrackerParams& p, double v) { p.max_range_m = v; },
-   "plots beyond this range are refused as out of range, m"},
-  {"max_position_variance_m2", 0.0, true, kInf, false,
-   [](const RadarTrackerParams& p) { return p.max_position_variance_m2; },
-   [](RadarTrackerParams& p, double v) { p.max_position_variance_m2 = v; },
-   "a track whose var(x) + var(y) exceeds this is deleted, m^2"},
-  {"gate_probability", 0.0, true, 1.0, false,
-   [](const RadarTrackerParams& p) { return gate_probability(p.gate); },
-   [](RadarTrackerParams& p, double v) { (void)gate_probability_from(v, p.gate); },  // check_range() refuses others
-   "chi-square gate of tentative tracks, and of confirmed ones under the board's gate: "
-   "0.9, 0.95, 0.99, 0.995 or 0.999"},
-  {"robust_noise_gain", 0.0, false, 1.0, false,
-   [](const RadarTrackerParams& p) { return p.robust_noise_gain; },
-   [](RadarTrackerParams& p, double v) { p.robust_noise_gain = v; },
-   "with the robust gate, the weight of each plot's NIS excess in a confirmed track's scale of R (0: off; "
-   "ekf-ca and imm only, the other filters refuse a gain)"},
-  {"robust_noise_max_scale", 1.0, false, kInf, false,
-   [](const RadarTrackerParams& p) { return p.robust_noise_max_scale; },
-   [](RadarTrackerParams& p, double v) { p.robust_noise_max_scale = v; },
-   "with the robust gate, the largest scale of R a confirmed track fuses with (1: off)"},
-  {"confirm_m", 1.0, false, 8.0, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.confirm_m); },
-   [](RadarTrackerParams& p, double v) { p.confirm_m = static_cast<std::uint8_t>(v); },
-   "M of M-of-N confirmation (the seed and the pairing plot count), <= confirm_n"},
-  {"confirm_n", 1.0, false, 8.0, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.confirm_n); },
-   [](RadarTrackerParams& p, double v) { p.confirm_n = static_cast<std::uint8_t>(v); },
-   "N of M-of-N confirmation, frames"},
-  {"seed_extra_frames", 0.0, false, 7.0, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.seed_extra_frames); },
-   [](RadarTrackerParams& p, double v) { p.seed_extra_frames = static_cast<std::uint8_t>(v); },
-   "two-point initiation: frames after the next one in which a seed still pairs, even after it has paired "
-   "(0: the next frame only)"},
-  {"seed_from_pairs", 0.0, false, 1.0, true,
-   [](const RadarTrackerParams& p) { return p.seed_from_pairs ? 1.0 : 0.0; },
-   [](RadarTrackerParams& p, double v) { p.seed_from_pairs = v == 1.0; },
-   "two-point initiation: the plot that completes a pair also starts a seed (0 or 1)"},
-  {"max_coast_misses", 0.0, false, 65535.0, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.max_coast_misses); },
-   [](RadarTrackerParams& p, double v) { p.max_coast_misses = static_cast<std::uint16_t>(v); },
-   "a confirmed track is deleted after more misses in a row than this"},
-  {"max_predict_us", 0.0, true, kMaxWhole, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.max_predict_us); },
-   [](RadarTrackerParams& p, double v) { p.max_predict_us = static_cast<std::int64_t>(v); },
-   "a track older than this at a frame is deleted, not extrapolated, us"},
-  {"max_forward_jump_us", 0.0, true, kMaxWhole, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.max_forward_jump_us); },
-   [](RadarTrackerParams& p, double v) { p.max_forward_jump_us = static_cast<std::int64_t>(v); },
-   "a frame this far after the last accepted one is refused (kTimeJumpedForward), us"},
-  {"resync_frames", 0.0, false, 255.0, true,
-   [](const RadarTrackerParams& p) { return static_cast<double>(p.resync_frames); },
-   [](RadarTrackerParams& p, double v) { p.resync_frames = static_cast<std::uint8_t>(v); },
-   "consistent refused frames before the tracker restarts on the new clock (0: never)"},
+  field_key<&P::sigma_range_m>("sigma_range_m", kPositive, "range noise sigma of the sensor, m"),
+  field_key<&P::sigma_bearing_rad>("sigma_bearing_rad", kPositive, "bearing noise sigma of the sensor, rad"),
+  field_key<&P::max_speed_mps>("max_speed_mps", kPositive, "two-point initiation refuses plot pairs faster than this, m/s"),
+  field_key<&P::init_accel_sigma_mps2>("init_accel_sigma_mps2", kPositive, "initial acceleration sigma of a new track, m/s^2"),
+  field_key<&P::max_range_m>("max_range_m", kPositive, "plots beyond this range are refused as out of range, m"),
+  field_key<&P::max_position_variance_m2>("max_position_variance_m2", kPositive,
+                                          "a track whose var(x) + var(y) exceeds this is deleted, m^2"),
+  field_key<&P::gate>("gate_probability", {},
+                      "chi-square gate of tentative tracks, and of confirmed ones under the board's gate"),
+  field_key<&P::robust_noise_gain>("robust_noise_gain", {0.0, false, 1.0},
+                                   "with the robust gate, the weight of each plot's NIS excess in a confirmed track's "
+                                   "scale of R (0: off; ekf-ca and imm only, the other filters refuse a gain)"),
+  field_key<&P::robust_noise_max_scale>("robust_noise_max_scale", {1.0},
+                                        "with the robust gate, the largest scale of R a confirmed track fuses with (1: off)"),
+  field_key<&P::confirm_m>("confirm_m", {1.0, false, 8.0},
+                           "M of M-of-N confirmation (the seed and the pairing plot count), <= confirm_n"),
+  field_key<&P::confirm_n>("confirm_n", {1.0, false, 8.0}, "N of M-of-N confirmation, frames"),
+  field_key<&P::seed_extra_frames>("seed_extra_frames", {0.0, false, 7.0},
+                                   "two-point initiation: frames after the next one in which a seed still pairs, even "
+                                   "after it has paired (0: the next frame only)"),
+  field_key<&P::seed_from_pairs>("seed_from_pairs", {},
+                                 "two-point initiation: the plot that completes a pair also starts a seed"),
+  field_key<&P::max_coast_misses>("max_coast_misses", {0.0, false, 65535.0},
+                                  "a confirmed track is deleted after more misses in a row than this"),
+  field_key<&P::max_predict_us>("max_predict_us", kPositiveMicroseconds,
+                                "a track older than this at a frame is deleted, not extrapolated, us"),
+  field_key<&P::max_forward_jump_us>("max_forward_jump_us", kPositiveMicroseconds,
+                                     "a frame this far after the last accepted one is refused (kTimeJumpedForward), us"),
+  field_key<&P::resync_frames>("resync_frames", {0.0, false, 255.0},
+                               "consistent refused frames before the tracker restarts on the new clock (0: never)"),
 };
 // clang-format on
 
@@ -121,33 +71,8 @@ std::string format(double v) {
   return text;
 }
 
-std::string shortest(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", v);
-  if (std::strtod(text, nullptr) == v) return text;
-  return format(v);
-}
-
 [[noreturn]] void refuse(const Setting& s, const std::string& why) {
-  throw std::invalid_argument(s.origin + " " + s.key + "=" + shortest(s.value) + ": " + why);
-}
-
-std::string range_text(const RadarKey& k) {
-  if (std::string(k.key) == "gate_probability") return "0.9, 0.95, 0.99, 0.995, 0.999";
-  std::string r = k.integer ? "whole, " : "";
-  r += k.lo_open ? "> " + shortest(k.lo) : shortest(k.lo) + "..";
-  if (k.hi != kInf) r += k.lo_open ? ", <= " + shortest(k.hi) : shortest(k.hi);
-  return r;
-}
-
-void check_range(const Setting& s, const RadarKey& k) {
-  const double v = s.value;
-  const bool above = k.lo_open ? v > k.lo : v >= k.lo;
-  if (!above || !(v <= k.hi) || (k.integer && v != std::floor(v))) refuse(s, "out of range (" + range_text(k) + ")");
-  GateProbability g{};
-  if (std::string(k.key) == "gate_probability" && !gate_probability_from(v, g)) {
-    refuse(s, "not one of " + range_text(k));
-  }
+  throw std::invalid_argument(s.origin + " " + s.key + "=" + shortest_text(s.value) + ": " + why);
 }
 
 void apply_one(const Setting& s, FilterOptions& o) {
@@ -168,7 +93,7 @@ void apply_one(const Setting& s, FilterOptions& o) {
     // The IMM checks its own keys and values when it is built (filters/imm_filters.cpp).
     o.imm.push_back(s.key.substr(4) + "=" + format(s.value));
   } else if (const RadarKey* k = find_radar_key(s.key)) {
-    check_range(s, *k);
+    if (!key_accepts(k->type, k->range, s.value)) refuse(s, "out of range (" + range_text(k->type, k->range) + ")");
     o.radar[s.key] = s.value;
   } else {
     std::string known;
@@ -260,16 +185,16 @@ void add_radar_parameters(const RadarTrackerParams& p, std::map<std::string, dou
 std::vector<SettingInfo> setting_table() {
   const RadarTrackerParams d;
   std::vector<SettingInfo> t = {
-      {"qj", shortest(d.qj) + " (IMM: its CA mode's)", "> 0", "white-jerk PSD of CA models, m^2/s^5 (same as --qj)"},
+      {"qj", shortest_text(d.qj) + " (IMM: its CA mode's)", "> 0", "white-jerk PSD of CA models, m^2/s^5 (same as --qj)"},
       {"gate_d2", "ungated (replay: the board's gate)", "> 0",
        "gate of confirmed tracks in d2 = nu' S^-1 nu units (same as --gate-d2)"},
       {"board_gate", "false (replay: true)", "false or true",
        "without gate_d2, gate confirmed tracks with the chi-square gate of gate_probability (same as --board-gate)"},
-      {"robust_gate_factor", shortest(d.robust_gate_factor) + " (off)", "0 or > 1",
+      {"robust_gate_factor", shortest_text(d.robust_gate_factor) + " (off)", "0 or > 1",
        "with the board's gate, take plots up to this factor x the gate's d2 with a shrunk innovation "
        "(same as --robust-gate)"},
   };
-  for (const RadarKey& k : kRadarKeys) t.push_back({k.key, shortest(k.get(d)), range_text(k), k.meaning});
+  for (const RadarKey& k : kRadarKeys) t.push_back({k.key, default_text(k, d), range_text(k.type, k.range), k.meaning});
   t.push_back({"imm.KEY", "docs/imm.md", "docs/imm.md", "an IMM parameter (same as --imm KEY=VALUE)"});
   return t;
 }
