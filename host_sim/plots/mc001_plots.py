@@ -13,16 +13,12 @@ matplotlib is missing it prints a warning and exits 1: the numbers are in the
 CSV files.
 """
 import argparse
-import csv
 import os
 import sys
 
-from plot_common import load_matplotlib
+from plot_common import load_matplotlib, read_rows, save_figure
 
 
-def read_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def main():
@@ -61,9 +57,7 @@ def main():
     axes[0].set_ylabel("position MSE, m^2 (95 % interval)")
     axes[-1].legend(fontsize=8, loc="upper left")
     fig.suptitle(f"MC-001: position MSE per cell, {runs} runs per cell (filters tuned to the middle cell)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(args.dir, "mc001_mse.png"), dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(args.dir, "mc001_mse.png"))
 
     timing = read_rows(os.path.join(args.dir, "mc001_timing.csv"))
     names = [r["filter"] for r in timing]
@@ -77,9 +71,7 @@ def main():
     ax.set_ylabel("time per step (predict + update), us")
     ax.set_title(f"MC-001: mean time per step ({threads} worker threads, double)")
     ax.tick_params(axis="x", labelrotation=30)
-    fig.tight_layout()
-    fig.savefig(os.path.join(args.dir, "mc001_time.png"), dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(args.dir, "mc001_time.png"))
     return 0
 
 

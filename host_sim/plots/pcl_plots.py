@@ -19,21 +19,14 @@ of its life, as in the metrics. Only the csv module is used; without
 matplotlib it prints a warning and exits 1.
 """
 import argparse
-import csv
-import math
 import os
 import sys
 
-from plot_common import load_matplotlib
+from plot_common import load_matplotlib, number, read_rows
 
 
-def num(cell):
-    return float(cell) if cell not in ("", None) else math.nan
 
 
-def rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def main():
@@ -43,9 +36,9 @@ def main():
     ap.add_argument("--out", default=None)
     a = ap.parse_args()
     plt = load_matplotlib()
-    cands = rows(os.path.join(a.dir, "pcl_candidates.csv"))
-    tracks = rows(os.path.join(a.dir, "pcl_tracks.csv"))
-    truth = rows(os.path.join(a.dir, "pcl_truth.csv"))
+    cands = read_rows(os.path.join(a.dir, "pcl_candidates.csv"))
+    tracks = read_rows(os.path.join(a.dir, "pcl_tracks.csv"))
+    truth = read_rows(os.path.join(a.dir, "pcl_truth.csv"))
 
     # Target tracks: on target in more than half of their reported frames.
     life = {}
@@ -63,18 +56,18 @@ def main():
     def scatter_all(ax, x, y, **kw):
         ax.scatter(x, y, s=3, c="0.75", linewidths=0, **kw)
 
-    cx = [num(c["fd_hz"]) for c in cands]
-    cy = [num(c["rb_m"]) for c in cands]
-    ct = [num(c["time_s"]) for c in cands]
+    cx = [number(c["fd_hz"]) for c in cands]
+    cy = [number(c["rb_m"]) for c in cands]
+    ct = [number(c["time_s"]) for c in cands]
     scatter_all(ax_rd, cx, cy, label="candidates (all frames)")
     scatter_all(ax_rt, ct, cy)
     scatter_all(ax_ft, ct, cx)
 
-    tt = [num(r["time_s"]) for r in truth]
-    ax_rd.plot([num(r["fd_hz"]) for r in truth], [num(r["rb_m"]) for r in truth], color="tab:green", lw=1,
+    tt = [number(r["time_s"]) for r in truth]
+    ax_rd.plot([number(r["fd_hz"]) for r in truth], [number(r["rb_m"]) for r in truth], color="tab:green", lw=1,
                label="truth")
-    ax_rt.plot(tt, [num(r["rb_m"]) for r in truth], color="tab:green", lw=1)
-    ax_ft.plot(tt, [num(r["fd_hz"]) for r in truth], color="tab:green", lw=1)
+    ax_rt.plot(tt, [number(r["rb_m"]) for r in truth], color="tab:green", lw=1)
+    ax_ft.plot(tt, [number(r["fd_hz"]) for r in truth], color="tab:green", lw=1)
 
     chosen = {}
     for c in cands:
@@ -83,21 +76,21 @@ def main():
     first = True
     for tid in sorted(life, key=int):
         tr = [r for r in tracks if r["track_id"] == tid]
-        t = [num(r["time_s"]) for r in tr]
-        rb = [num(r["rb_m"]) for r in tr]
-        fd = [num(r["fd_hz"]) for r in tr]
+        t = [number(r["time_s"]) for r in tr]
+        rb = [number(r["rb_m"]) for r in tr]
+        fd = [number(r["fd_hz"]) for r in tr]
         if tid in target_ids:
             ch = chosen.get(tid, [])
-            chx = [num(c["fd_hz"]) for c in ch]
-            chy = [num(c["rb_m"]) for c in ch]
-            cht = [num(c["time_s"]) for c in ch]
+            chx = [number(c["fd_hz"]) for c in ch]
+            chy = [number(c["rb_m"]) for c in ch]
+            cht = [number(c["time_s"]) for c in ch]
             kw = dict(color="black", ls=":", lw=0.8, marker=".", ms=4)
             ax_rd.plot(chx, chy, label="chosen candidates" if first else None, **kw)
             ax_rt.plot(cht, chy, **kw)
             ax_ft.plot(cht, chx, **kw)
-            pt = [num(r["time_s"]) for r in tr]
-            prb = [num(r["pred_rb_m"]) for r in tr]
-            pfd = [num(r["pred_fd_hz"]) for r in tr]
+            pt = [number(r["time_s"]) for r in tr]
+            prb = [number(r["pred_rb_m"]) for r in tr]
+            pfd = [number(r["pred_fd_hz"]) for r in tr]
             kw = dict(color="tab:purple", ls="--", lw=1)
             ax_rd.plot(pfd, prb, label="prediction F x" if first else None, **kw)
             ax_rt.plot(pt, prb, **kw)
@@ -122,11 +115,11 @@ def main():
     ax_ft.set_ylabel("fD (Hz)")
     ax_ft.set_xlabel("time (s)")
     if truth:
-        lo = min(num(r["rb_m"]) for r in truth)
-        hi = max(num(r["rb_m"]) for r in truth)
+        lo = min(number(r["rb_m"]) for r in truth)
+        hi = max(number(r["rb_m"]) for r in truth)
         ax_rt.set_ylim(lo - 150, hi + 150)
-        flo = min(num(r["fd_hz"]) for r in truth)
-        fhi = max(num(r["fd_hz"]) for r in truth)
+        flo = min(number(r["fd_hz"]) for r in truth)
+        fhi = max(number(r["fd_hz"]) for r in truth)
         ax_ft.set_ylim(flo - 15, fhi + 15)
     for ax in (ax_rd, ax_rt, ax_ft):
         ax.grid(True, lw=0.3)

@@ -22,23 +22,16 @@ pandas). If matplotlib is missing it prints a warning and exits 1: plots are
 a convenience, the numbers are in the CSV and JSON files.
 """
 import argparse
-import csv
 import json
 import math
 import sys
 import textwrap
 
-from plot_common import load_matplotlib
+from plot_common import load_matplotlib, number, read_rows, save_figure
 
 
-def number(cell):
-    """A float, or NaN for an empty cell."""
-    return float(cell) if cell not in ("", None) else math.nan
 
 
-def read_rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def wrapped(title, width=90):
@@ -74,9 +67,7 @@ def plot_run(plt, args):
     ax.grid(True, alpha=0.3)
     ax.legend(loc="best", fontsize=8)
     ax.set_title(wrapped(f"{args.title}: x-y (run 0)"), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(f"{args.out_prefix}_xy.png", dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, f"{args.out_prefix}_xy.png")
 
     fig, ax = plt.subplots(figsize=(9, 4))
     err = [number(r["error_m"]) for r in steps]
@@ -90,9 +81,7 @@ def plot_run(plt, args):
     ax.grid(True, alpha=0.3)
     ax.legend(loc="upper right", fontsize=8)
     ax.set_title(wrapped(f"{args.title}: position error (run 0)"), fontsize=9)
-    fig.tight_layout()
-    fig.savefig(f"{args.out_prefix}_error.png", dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, f"{args.out_prefix}_error.png")
 
 
 def plot_summary(plt, args):
@@ -119,9 +108,7 @@ def plot_summary(plt, args):
         ax.set_xticklabels(labels, fontsize=8)
         ax.set_title(f"{title}, mean and 95 % CI")
         ax.grid(True, axis="y", alpha=0.3)
-    fig.tight_layout()
-    fig.savefig(args.out, dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, args.out)
 
 
 def truth_manoeuvre(steps):
@@ -201,9 +188,7 @@ def plot_modes(plt, args):
     ax2.set_xlabel("time [s]")
     ax2.grid(True, alpha=0.3)
     ax2.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
-    fig.tight_layout()
-    fig.savefig(args.out, dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, args.out)
 
 
 def plot_gospa(plt, args):
@@ -226,9 +211,7 @@ def plot_gospa(plt, args):
         a.set_ylim(bottom=0)
         a.legend(loc="upper right", fontsize=8)
     ax.set_title(f"{args.title}: GOSPA and OSPA per step, mean over runs", fontsize=9)
-    fig.tight_layout()
-    fig.savefig(args.out, dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, args.out)
     return True
 
 

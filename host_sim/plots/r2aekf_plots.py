@@ -16,26 +16,18 @@ Only the csv and json modules are used to read; without matplotlib it warns
 and exits 1 (every figure's numbers are in the CSV and JSON files).
 """
 import argparse
-import csv
 import json
 import math
 import os
 import sys
 
-from plot_common import load_matplotlib
+from plot_common import load_matplotlib, number, read_rows, save_figure
 
 COLOURS = {"r2aekf": "tab:red", "r2aekf-paper": "tab:orange"}
 
 
-def number(cell):
-    return float(cell) if cell not in ("", None) else math.nan
 
 
-def read_rows(path):
-    if not os.path.exists(path):
-        return []
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def colour(key, i):
@@ -47,7 +39,7 @@ def fig2(plt, d, scenarios, filters):
     for ax, s in zip(axes[0], scenarios):
         first = True
         for i, f in enumerate(filters):
-            rows = read_rows(os.path.join(d, s, f["key"] + "_steps.csv"))
+            rows = read_rows(os.path.join(d, s, f["key"] + "_steps.csv"), missing_ok=True)
             if not rows:
                 continue
             if first:
@@ -63,16 +55,14 @@ def fig2(plt, d, scenarios, filters):
         ax.set_ylabel("y [km]")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="best")
-    fig.tight_layout()
-    fig.savefig(os.path.join(d, "fig2_trajectories.png"), dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(d, "fig2_trajectories.png"), dpi=110)
 
 
 def fig3(plt, d, scenarios, filters):
     fig, axes = plt.subplots(len(scenarios), 1, figsize=(10, 2.8 * len(scenarios)), squeeze=False)
     for ax, s in zip(axes[:, 0], scenarios):
         for i, f in enumerate(filters):
-            rows = read_rows(os.path.join(d, s, f["key"] + "_steps.csv"))
+            rows = read_rows(os.path.join(d, s, f["key"] + "_steps.csv"), missing_ok=True)
             ax.plot([number(r["time_s"]) for r in rows], [number(r["error_m"]) for r in rows], "-", lw=1,
                     color=colour(f["key"], i), label=f["label"])
         ax.axhline(300.0, color="k", ls="--", lw=0.8, label="L = 300 m")
@@ -81,9 +71,7 @@ def fig3(plt, d, scenarios, filters):
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="upper right")
     axes[-1, 0].set_xlabel("time [s]")
-    fig.tight_layout()
-    fig.savefig(os.path.join(d, "fig3_error.png"), dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(d, "fig3_error.png"), dpi=110)
 
 
 def fig4(plt, d, scenarios):
@@ -92,7 +80,7 @@ def fig4(plt, d, scenarios):
     for row, s in enumerate(scenarios):
         for col, key in enumerate(("r2aekf", "r2aekf-paper")):
             ax = axes[row, col]
-            rows = read_rows(os.path.join(d, s, key + "_scales.csv"))
+            rows = read_rows(os.path.join(d, s, key + "_scales.csv"), missing_ok=True)
             t = [number(r["time_s"]) for r in rows]
             for name, label in names:
                 ax.semilogy(t, [number(r[name]) for r in rows], lw=1, label=label)
@@ -102,9 +90,7 @@ def fig4(plt, d, scenarios):
             ax.set_ylabel("scale")
     for col in range(2):
         axes[-1, col].set_xlabel("time [s]")
-    fig.tight_layout()
-    fig.savefig(os.path.join(d, "fig4_scales.png"), dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(d, "fig4_scales.png"), dpi=110)
 
 
 def fig5(plt, d, study, scenarios, filters):
@@ -130,9 +116,7 @@ def fig5(plt, d, study, scenarios, filters):
         ax.grid(True, axis="y", alpha=0.3)
     axes[0].legend(fontsize=6, loc="upper left")
     fig.suptitle("Monte Carlo mean and 95 % interval", fontsize=10)
-    fig.tight_layout()
-    fig.savefig(os.path.join(d, "fig5_metrics.png"), dpi=110)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(d, "fig5_metrics.png"), dpi=110)
 
 
 def main():

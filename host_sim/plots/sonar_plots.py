@@ -21,25 +21,19 @@ Only the csv module is used; without matplotlib it prints a warning and
 exits 1.
 """
 import argparse
-import csv
 import math
 import os
 import sys
 
-from plot_common import load_matplotlib
+from plot_common import load_matplotlib, number, read_rows, save_figure
 
 
-def num(cell):
-    return float(cell) if cell not in ("", None) else math.nan
 
 
-def rows(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
 
 
 def col(rs, name):
-    return [num(r[name]) for r in rs]
+    return [number(r[name]) for r in rs]
 
 
 def main():
@@ -48,10 +42,10 @@ def main():
     ap.add_argument("--title", default="UW run 0")
     a = ap.parse_args()
     plt = load_matplotlib()
-    truth = rows(os.path.join(a.dir, "sonar_truth.csv"))
-    track = [r for r in rows(os.path.join(a.dir, "sonar_track.csv")) if r["reported"] == "1"]
-    arrivals = rows(os.path.join(a.dir, "sonar_arrivals.csv"))
-    steps = rows(os.path.join(a.dir, "sonar_steps.csv"))
+    truth = read_rows(os.path.join(a.dir, "sonar_truth.csv"))
+    track = [r for r in read_rows(os.path.join(a.dir, "sonar_track.csv")) if r["reported"] == "1"]
+    arrivals = read_rows(os.path.join(a.dir, "sonar_arrivals.csv"))
+    steps = read_rows(os.path.join(a.dir, "sonar_steps.csv"))
     summary_path = os.path.join(a.dir, "summary.json")
     beacons = []
     seabed = math.nan
@@ -67,7 +61,6 @@ def main():
                 seabed = s["scenario"]["seabed_depth_m"]
                 break
 
-    tt = col(truth, "time_s")
     tx, ty, tz, tc = col(truth, "x_m"), col(truth, "y_m"), col(truth, "z_m"), col(truth, "c_mps")
     kx = [int(r["frame"]) for r in track]
     ex, ey, ez, ec = col(track, "x_m"), col(track, "y_m"), col(track, "z_m"), col(track, "c_mps")
@@ -111,14 +104,12 @@ def main():
     ax2.grid(alpha=0.3)
     ax2.legend(fontsize=8)
     fig.suptitle(a.title + " - track (paper 003 fig. 1)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, "sonar_track.png"), dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(a.dir, "sonar_track.png"))
 
     # Figure 2: position error per frame.
     e3, eh, ed = [], [], []
     for r, k in zip(track, kx):
-        dx, dy, dz = num(r["x_m"]) - tx[k], num(r["y_m"]) - ty[k], num(r["z_m"]) - tz[k]
+        dx, dy, dz = number(r["x_m"]) - tx[k], number(r["y_m"]) - ty[k], number(r["z_m"]) - tz[k]
         e3.append(math.sqrt(dx * dx + dy * dy + dz * dz))
         eh.append(math.hypot(dx, dy))
         ed.append(abs(dz))
@@ -147,9 +138,7 @@ def main():
     ax2.grid(alpha=0.3)
     ax2.legend(fontsize=8)
     fig.suptitle(a.title + " - position error (paper 003 fig. 2)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, "sonar_error.png"), dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(a.dir, "sonar_error.png"))
 
     # Figure 3: sound speed.
     fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(10, 7), sharex=True)
@@ -167,9 +156,7 @@ def main():
     ax2.set_ylabel("RMS error (m/s)")
     ax2.grid(alpha=0.3)
     fig.suptitle(a.title + " - sound speed (paper 003 fig. 3)")
-    fig.tight_layout()
-    fig.savefig(os.path.join(a.dir, "sonar_sound_speed.png"), dpi=120)
-    plt.close(fig)
+    save_figure(plt, fig, os.path.join(a.dir, "sonar_sound_speed.png"))
     return 0
 
 
