@@ -99,11 +99,6 @@ nlohmann::json status_counts_json(const hal::RunnerStats& s) {
   return j;
 }
 
-nlohmann::json step_ns_json(const StepTiming& t) {
-  return {{"min", t.min_ns},   {"median", t.median_ns},   {"p99", t.p99_ns},         {"max", t.max_ns},
-          {"mean", t.mean_ns}, {"steps", t.steps},        {"budget_ns", t.budget_ns}, {"overruns", t.overruns}};
-}
-
 /// What every PCL or sonar replay reports, whichever tracker ran.
 struct OtherKindResult {
   hal::RunnerStats stats;
@@ -235,7 +230,7 @@ OtherKindResult replay_sonar(std::vector<std::uint8_t> bytes, const std::string&
     config.runs = 1;
     config.budget_ns = budget_ns;
     r.entry.update(metric_fields(sonar_summary_json(sc, params, config, summarise_sonar({m}, budget_ns)),
-                                 {"kind", "scenario", "tracker", "runs", "seeds", "per_step", "timing_ns",
+                                 {"kind", "scenario", "tracker", "runs", "seeds", "per_step", "step_ns",
                                   "frames_refused", "depth_reflections"}));
     r.entry["truth_frames"] = truth_match_json(score.match);
     r.entry["scored_frames"] = m.scored_frames;

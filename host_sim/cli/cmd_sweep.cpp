@@ -150,11 +150,7 @@ int cmd_sweep(const SweepOptions& o) {
   for (std::size_t i = 0; i < sweep.values.size(); ++i) apply_settings({&sweep.values[i], 1}, options[i]);
   const std::string scenario = made->info().name;
   const std::filesystem::path dir = sweep_dir(o, scenario, o.filter.filter);
-  MonteCarloParams config;
-  config.runs = o.runs;
-  config.base_seed = o.seed;
-  config.jobs = o.jobs;
-  config.budget_ns = budget_ns_from_us(o.filter.budget_us);
+  auto config = monte_carlo_params<MonteCarloParams>(o);
 
   nlohmann::json results = nlohmann::json::object();
   std::vector<TableRow> rows;

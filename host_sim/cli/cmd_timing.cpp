@@ -29,43 +29,38 @@ namespace {
 /// The PCL or sonar tracker over `o.runs` seeds of a PCL or sonar
 /// scenario, one job, with the tracker's keys of --config/--set: the same
 /// Monte Carlo as `run`, its step times alone.
-int timing_sensor_scenario(const TimingOptions& o, hal::FrameKind kind) {
-  if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-  const std::uint64_t budget_ns = budget_ns_from_us(o.filter.budget_us);
+StepTiming sensor_scenario_timing(const TimingOptions& o, hal::FrameKind kind, std::string& what) {
   const std::vector<Setting> settings = read_settings(o.filter.config, o.filter.sets);
-  StepTiming timing;
-  std::string what;
   if (kind == hal::FrameKind::kPcl) {
     const PclScenarioParams scenario = pcl_config_by_name(o.scenario);
     PclTrackerParams params = pcl_params_for(scenario);
     apply_pcl_settings(settings, params);
-    PclMonteCarloParams config;
-    config.runs = o.runs;
-    config.base_seed = o.seed;
-    config.jobs = 1;
-    config.budget_ns = budget_ns;
-    const PclMonteCarloResult mc = run_pcl_monte_carlo(scenario, params, config);
-    timing = summarise_pcl(mc.runs, budget_ns).timing;
+    const auto config = monte_carlo_params<PclMonteCarloParams>(o);
     what = scenario.name + " / PCL tracker (" + std::string(kPclFilterName) + ", nn, M-of-N), " +
            std::to_string(o.runs) + " runs";
-  } else {
-    const SonarScenarioParams scenario = sonar_config_by_name(o.scenario);
-    SonarTrackerParams params = sonar_params_for(scenario);
-    apply_sonar_settings(settings, params);
-    SonarMonteCarloParams config;
-    config.runs = o.runs;
-    config.base_seed = o.seed;
-    config.jobs = 1;
-    config.budget_ns = budget_ns;
-    const SonarMonteCarloResult mc = run_sonar_monte_carlo(scenario, params, config);
-    timing = summarise_sonar(mc.runs, budget_ns).timing;
-    what = scenario.name + " / sonar tracker (" + std::string(kSonarFilterName) + "), " +
-           std::to_string(o.runs) + " runs";
+    return summarise_pcl(run_pcl_monte_carlo(scenario, params, config).runs, config.budget_ns).timing;
   }
-  print_timing(stdout, what, timing);
-  std::printf("  measured by hal::Runner around adapter + Tracker::step with SteadyClock (1 cycle = 1 ns);\n"
-              "  wall-clock on a shared host: compare medians, read max as an upper bound only\n");
-  return 0;
+  const SonarScenarioParams scenario = sonar_config_by_name(o.scenario);
+  SonarTrackerParams params = sonar_params_for(scenario);
+  apply_sonar_settings(settings, params);
+  const auto config = monte_carlo_params<SonarMonteCarloParams>(o);
+  what = scenario.name + " / sonar tracker (" + std::string(kSonarFilterName) + "), " + std::to_string(o.runs) +
+         " runs";
+  return summarise_sonar(run_sonar_monte_carlo(scenario, params, config).runs, config.budget_ns).timing;
+}
+
+/// The step times of o's scenario (a radar one), with the filter of o or,
+/// for several targets, the tracker `run` uses for them.
+StepTiming radar_scenario_timing(const TimingOptions& o, std::string& what) {
+  const auto scenario = make_scenario(o.scenario);
+  auto config = monte_carlo_params<MonteCarloParams>(o);
+  if (scenario->info().targets > 1) {
+    return summarise_step_times(multi_target_step_times(o, what), config.budget_ns);
+  }
+  const FilterEntry& filter = find_filter(o.filter.filter);
+  config.options = o.filter.options;
+  what = scenario->info().name + " / " + filter.setup(config.options).label + ", " + std::to_string(o.runs) + " runs";
+  return summarise(run_monte_carlo(*scenario, filter, config).runs, config.budget_ns).timing;
 }
 
 }  // namespace
@@ -74,34 +69,15 @@ int cmd_timing(const TimingOptions& o) {
   if (!o.worst_case.empty()) return cmd_timing_worst_case(o.worst_case, o.runs);
   if (o.scenario.empty()) throw std::invalid_argument("timing needs --scenario or --worst-case");
   const std::optional<hal::FrameKind> kind = scenario_kind(o.scenario);
+  std::string what;
+  StepTiming timing;
   if (kind.has_value() && *kind != hal::FrameKind::kRadar) {
     check_filter_fits(o.filter, *kind, "scenario '" + o.scenario + "' is a " + sensor_kind_name(*kind) + " scenario");
-    return timing_sensor_scenario(o, *kind);
+    timing = sensor_scenario_timing(o, *kind, what);
+  } else {
+    timing = radar_scenario_timing(o, what);
   }
-  const auto scenario = make_scenario(o.scenario);
-  if (scenario->info().targets > 1) {
-    if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-    std::string what;
-    const std::vector<std::uint64_t> step_ns = multi_target_step_times(o, what);
-    print_timing(stdout, what, summarise_step_times(step_ns, budget_ns_from_us(o.filter.budget_us)));
-    std::printf("  measured by hal::Runner around adapter + Tracker::step with SteadyClock (1 cycle = 1 ns);\n"
-                "  wall-clock on a shared host: compare medians, read max as an upper bound only\n");
-    return 0;
-  }
-  const FilterEntry& filter = find_filter(o.filter.filter);
-  MonteCarloParams config;
-  config.runs = o.runs;
-  config.base_seed = o.seed;
-  config.jobs = 1;
-  config.budget_ns = budget_ns_from_us(o.filter.budget_us);
-  config.options = o.filter.options;
-  if (config.runs == 0) throw std::invalid_argument("--runs must be at least 1");
-
-  const MonteCarloResult mc = run_monte_carlo(*scenario, filter, config);
-  const MonteCarloSummary s = summarise(mc.runs, config.budget_ns);
-  const std::string what = scenario->info().name + " / " + filter.setup(config.options).label + ", " +
-                           std::to_string(o.runs) + " runs";
-  print_timing(stdout, what, s.timing);
+  print_timing(stdout, what, timing);
   std::printf("  measured by hal::Runner around adapter + Tracker::step with SteadyClock (1 cycle = 1 ns);\n"
               "  wall-clock on a shared host: compare medians, read max as an upper bound only\n");
   return 0;

@@ -36,17 +36,22 @@ ScenarioReport run_scenario_report(const std::string& scenario_name, const std::
 /// Step budget in ns from microseconds (CLI unit).
 std::uint64_t budget_ns_from_us(double budget_us);
 
-/// run's --runs, --seed, --jobs and --budget-us as the Monte Carlo
-/// parameters of its scenario's kind (MonteCarloParams, PclMonteCarloParams
-/// and SonarMonteCarloParams name them alike). Throws std::invalid_argument
+/// A command's --runs, --seed, --jobs (one job for a command without it,
+/// such as `timing`) and --budget-us as the Monte Carlo parameters of its
+/// scenario's kind (MonteCarloParams, PclMonteCarloParams and
+/// SonarMonteCarloParams name them alike). Throws std::invalid_argument
 /// for 0 runs or a budget that is not positive.
-template <class Params>
-Params monte_carlo_params(const RunOptions& o) {
+template <class Params, class Options>
+Params monte_carlo_params(const Options& o) {
   if (o.runs == 0) throw std::invalid_argument("--runs must be at least 1");
   Params c;
   c.runs = o.runs;
   c.base_seed = o.seed;
-  c.jobs = o.jobs;
+  if constexpr (requires { o.jobs; }) {
+    c.jobs = o.jobs;
+  } else {
+    c.jobs = 1;
+  }
   c.budget_ns = budget_ns_from_us(o.filter.budget_us);
   return c;
 }

@@ -15,9 +15,9 @@ namespace {
 
 template <class Scalar>
 StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  using Tracker = SimRadarTracker<EkfCa<Scalar>>;
-  // The tracker holds the whole track table: keep it off the stack.
-  auto tracker = std::make_unique<Tracker>(make_ekf_ca_tracker<Scalar>(options));
+  const RadarTrackerParams p = radar_tracker_params(options);
+  const auto tracker =
+      make_sim_radar_tracker<SimRadarTracker<EkfCa<Scalar>>>(ca_polar_filter<EkfCa<Scalar>>(p), options, p);
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 
@@ -25,22 +25,8 @@ StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std:
 
 template <class Scalar>
 SimRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options) {
-  using T = ScalarTraits<Scalar>;
   const RadarTrackerParams p = radar_tracker_params(options);
-  // What make_radar_tracker() builds, plus the confirmed-track gate, which
-  // RadarTrackerParams does not carry.
-  CaMotion<Scalar> motion;
-  motion.qj = T::from_double(p.qj);
-  CaPolarRadar<Scalar> radar;
-  radar.sigma_range_m = T::from_double(p.sigma_range_m);
-  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
-  const auto init = radar_initiator<SimRadarTracker<EkfCa<Scalar>>>(radar, T::from_double(p.max_speed_mps),
-                                                                     T::from_double(p.init_accel_sigma_mps2), p);
-  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(p);
-  apply_gate_options<Scalar>(options, config);
-  SimRadarTracker<EkfCa<Scalar>> tracker(EkfCa<Scalar>(motion, radar), init, config);
-  apply_measurement_noise(tracker, p);
-  return tracker;
+  return *make_sim_radar_tracker<SimRadarTracker<EkfCa<Scalar>>>(ca_polar_filter<EkfCa<Scalar>>(p), options, p);
 }
 
 template SimRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(const FilterOptions&);

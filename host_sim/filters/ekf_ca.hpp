@@ -29,6 +29,21 @@ using SimRadarTracker =
     Tracker<Filter, TwoPointHypothesesInitiator<typename Filter::MotionModel, typename Filter::MeasurementModel>,
             host::kMaxTracks, host::kMaxPlots, NearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
 
+/// A filter of the CA-2D model and the polar radar (EkfCa, Ukf, Crpf,
+/// R2AekfCa with its config as `extra`, ...) with p's qj and sensor
+/// sigmas, in the filter's scalar.
+template <class Filter, class... Extra>
+Filter ca_polar_filter(const RadarTrackerParams& p, const Extra&... extra) {
+  using Scalar = typename Filter::Scalar;
+  const RadarTrackerConfig<Scalar> s = radar_tracker_config<Scalar>(p);
+  CaMotion<Scalar> motion;
+  motion.qj = s.qj;
+  CaPolarRadar<Scalar> radar;
+  radar.sigma_range_m = s.sigma_range_m;
+  radar.sigma_bearing_rad = s.sigma_bearing_rad;
+  return Filter(motion, radar, extra...);
+}
+
 /// kestrel-sim's EKF-CA tracker for these options (double and float are
 /// instantiated). Unless options.confirmed_gate_d2 is set, confirmed tracks
 /// are ungated (FilterOptions). Throws std::invalid_argument when the

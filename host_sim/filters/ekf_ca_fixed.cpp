@@ -16,29 +16,13 @@ namespace kestrel::sim {
 
 namespace {
 
-/// What make_ekf_ca_tracker() builds for double and float, on Q.
-template <class Q>
-host::BoardRadarTracker<EkfCa<Q>> make_fixed_tracker(const FilterOptions& options) {
-  const RadarTrackerParams p = radar_tracker_params(options);
-  const RadarTrackerConfig<Q> s = radar_tracker_config<Q>(p);
-  CaMotion<Q> motion;
-  motion.qj = s.qj;
-  CaPolarRadar<Q> radar;
-  radar.sigma_range_m = s.sigma_range_m;
-  radar.sigma_bearing_rad = s.sigma_bearing_rad;
-  const auto init =
-      radar_initiator<host::BoardRadarTracker<EkfCa<Q>>>(radar, s.max_speed_mps, s.init_accel_sigma_mps2, p);
-  TrackerConfig<Q, 2> config = tracker_config_of<Q>(p, s);
-  apply_gate_options<Q>(options, config);
-  host::BoardRadarTracker<EkfCa<Q>> tracker(EkfCa<Q>(motion, radar), init, config);
-  apply_measurement_noise(tracker, p);  // built without the adaptive noise: refuses a gain
-  return tracker;
-}
-
+/// The EKF-CA tracker of make_ekf_ca_tracker() on Q, as a board builds it
+/// (without the adaptive noise: it refuses a gain).
 template <class Q>
 StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  using Tracker = host::BoardRadarTracker<EkfCa<Q>>;
-  auto tracker = std::make_unique<Tracker>(make_fixed_tracker<Q>(options));
+  const RadarTrackerParams p = radar_tracker_params(options);
+  const auto tracker =
+      make_sim_radar_tracker<host::BoardRadarTracker<EkfCa<Q>>>(ca_polar_filter<EkfCa<Q>>(p), options, p);
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 

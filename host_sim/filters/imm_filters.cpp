@@ -120,17 +120,9 @@ RadarImmParams imm_params(const FilterOptions& options) {
 
 template <class Scalar>
 SimRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options) {
-  using T = ScalarTraits<Scalar>;
-  const RadarImmParams p = imm_params(options);
   const RadarTrackerParams tp = radar_tracker_params(options);  // initiation and management of "ekf-ca"
-  const RadarImm<Scalar> prototype = make_radar_imm<Scalar>(p);
-  const auto init = radar_initiator<SimRadarTracker<RadarImm<Scalar>>>(
-      prototype.measurement(), T::from_double(tp.max_speed_mps), T::from_double(tp.init_accel_sigma_mps2), tp);
-  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(tp);
-  apply_gate_options<Scalar>(options, config);
-  SimRadarTracker<RadarImm<Scalar>> tracker(prototype, init, config);
-  apply_measurement_noise(tracker, tp);
-  return tracker;
+  return *make_sim_radar_tracker<SimRadarTracker<RadarImm<Scalar>>>(make_radar_imm<Scalar>(imm_params(options)),
+                                                                     options, tp);
 }
 
 template SimRadarTracker<RadarImm<double>> make_imm_tracker<double>(const FilterOptions&);

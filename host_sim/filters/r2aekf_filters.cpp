@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "filters/ekf_ca.hpp"
 #include "filters/settings.hpp"
 #include "kestrel/host/board.hpp"
 #include "kestrel/scalar/fixed_point_eigen.hpp"
@@ -48,40 +49,24 @@ R2AekfConfig<Scalar> convert(const R2AekfConfig<double>& c) {
   return o;
 }
 
-/// The tracker type for a filter type (R2AekfCa or the logging wrapper).
+/// The board's tracker around an R2AekfCa or the logging wrapper (built
+/// without the adaptive noise: it refuses a gain).
 template <class Filter>
-host::BoardRadarTracker<Filter> make_tracker_of(const FilterOptions& options, const Filter& prototype) {
-  using Scalar = typename Filter::Scalar;
-  using T = ScalarTraits<Scalar>;
-  const RadarTrackerParams p = radar_tracker_params(options);
-  const auto init = radar_initiator<host::BoardRadarTracker<Filter>>(
-      prototype.measurement(), T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2), p);
-  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(p);
-  apply_gate_options<Scalar>(options, config);
-  host::BoardRadarTracker<Filter> tracker(prototype, init, config);
-  apply_measurement_noise(tracker, p);  // built without the adaptive noise: refuses a gain
-  return tracker;
+std::unique_ptr<host::BoardRadarTracker<Filter>> make_tracker_of(const FilterOptions& options,
+                                                                 const Filter& prototype) {
+  return make_sim_radar_tracker<host::BoardRadarTracker<Filter>>(prototype, options, radar_tracker_params(options));
 }
 
 template <class Scalar>
 R2AekfCa<Scalar> make_filter(const FilterOptions& options, const R2AekfConfig<Scalar>& config) {
-  using T = ScalarTraits<Scalar>;
-  const RadarTrackerParams p = radar_tracker_params(options);
-  CaMotion<Scalar> motion;
-  motion.qj = T::from_double(p.qj);
-  CaPolarRadar<Scalar> radar;
-  radar.sigma_range_m = T::from_double(p.sigma_range_m);
-  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
   if (!config.valid()) throw std::invalid_argument("R2-AEKF config out of range");
-  return R2AekfCa<Scalar>(motion, radar, config);
+  return ca_polar_filter<R2AekfCa<Scalar>>(radar_tracker_params(options), config);
 }
 
 template <class Scalar>
 StreamRunResult run_with(StreamInput stream, const FilterOptions& options,
                          const R2AekfConfig<Scalar>& config, std::uint64_t budget_ns) {
-  using Tracker = host::BoardRadarTracker<R2AekfCa<Scalar>>;
-  // The tracker holds the whole track table: keep it off the stack.
-  auto tracker = std::make_unique<Tracker>(make_r2aekf_tracker<Scalar>(options, config));
+  const auto tracker = make_tracker_of(options, make_filter<Scalar>(options, config));
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 
@@ -143,7 +128,7 @@ FilterEntry g_study_entry{"r2aekf-study", "R2-AEKF with the study's config (not 
 template <class Scalar>
 host::BoardRadarTracker<R2AekfCa<Scalar>> make_r2aekf_tracker(const FilterOptions& options,
                                                               const R2AekfConfig<Scalar>& config) {
-  return make_tracker_of(options, make_filter<Scalar>(options, config));
+  return *make_tracker_of(options, make_filter<Scalar>(options, config));
 }
 
 template host::BoardRadarTracker<R2AekfCa<double>> make_r2aekf_tracker<double>(const FilterOptions&,
@@ -224,8 +209,7 @@ LoggedR2AekfRun run_r2aekf_logged(std::vector<std::uint8_t> stream, const Filter
   std::vector<ScaleSample> log;
   // At most one update per track and frame; a frame is at least a header.
   log.reserve((stream.size() / 16 + 1) * Tracker::Table::kMaxTracks);
-  auto tracker = std::make_unique<Tracker>(
-      make_tracker_of(options, LoggingR2Aekf(make_filter<double>(options, config), &log)));
+  const auto tracker = make_tracker_of(options, LoggingR2Aekf(make_filter<double>(options, config), &log));
   LoggedR2AekfRun out;
   out.stream = run_stream(*tracker, std::move(stream), budget_ns);
 

@@ -24,24 +24,10 @@ using Crpf100 = Crpf<M, H, 100>;
 // the same tracks; Monte Carlo runs differ by their measurement noise.
 template <template <class, class> class FilterT, class Scalar>
 StreamRunResult run_family(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  using Motion = CaMotion<Scalar>;
-  using Radar = CaPolarRadar<Scalar>;
-  using Filter = FilterT<Motion, Radar>;
-  using Tracker = host::BoardRadarTracker<Filter>;
-  using T = ScalarTraits<Scalar>;
+  using Filter = FilterT<CaMotion<Scalar>, CaPolarRadar<Scalar>>;
   const RadarTrackerParams p = radar_tracker_params(options);
-  Motion motion;
-  motion.qj = T::from_double(p.qj);
-  Radar radar;
-  radar.sigma_range_m = T::from_double(p.sigma_range_m);
-  radar.sigma_bearing_rad = T::from_double(p.sigma_bearing_rad);
-  const auto init =
-      radar_initiator<Tracker>(radar, T::from_double(p.max_speed_mps), T::from_double(p.init_accel_sigma_mps2), p);
-  TrackerConfig<Scalar, 2> config = tracker_config_of<Scalar>(p);
-  apply_gate_options<Scalar>(options, config);
-  // The tracker holds the whole track table: keep it off the stack.
-  auto tracker = std::make_unique<Tracker>(Filter(motion, radar), init, config);
-  apply_measurement_noise(*tracker, p);  // built without the adaptive noise: refuses a gain
+  // Built without the adaptive noise: refuses a gain.
+  const auto tracker = make_sim_radar_tracker<host::BoardRadarTracker<Filter>>(ca_polar_filter<Filter>(p), options, p);
   return run_stream(*tracker, std::move(stream), budget_ns);
 }
 

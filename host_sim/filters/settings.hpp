@@ -7,6 +7,7 @@
 #pragma once
 
 #include <map>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -93,6 +94,25 @@ typename Tracker::InitiatorT radar_initiator(const Radar& radar, typename Tracke
                                 "start\")");
   }
   return init;
+}
+
+/// kestrel-sim's radar tracker of type TrackerT around `prototype` (a
+/// filter with its models set), off the stack (the track table is large):
+/// p's two-point initiator on the prototype's measurement model, p's
+/// tracker configuration with the options' confirmed-track gate, and p's
+/// adaptive-noise keys (apply_measurement_noise). Every single-target radar
+/// filter of the registry but EKF-CA-RR (a third channel) is built here.
+template <class TrackerT, class Filter>
+std::unique_ptr<TrackerT> make_sim_radar_tracker(const Filter& prototype, const FilterOptions& options,
+                                                 const RadarTrackerParams& p) {
+  using Scalar = typename TrackerT::Scalar;
+  const RadarTrackerConfig<Scalar> s = radar_tracker_config<Scalar>(p);
+  const auto init = radar_initiator<TrackerT>(prototype.measurement(), s.max_speed_mps, s.init_accel_sigma_mps2, p);
+  typename TrackerT::Config config = tracker_config_of<Scalar>(p, s);
+  apply_gate_options<Scalar>(options, config);
+  auto tracker = std::make_unique<TrackerT>(prototype, init, config);
+  apply_measurement_noise(*tracker, p);
+  return tracker;
 }
 
 /// Every radar tracker key with its value in p, for summary.json.

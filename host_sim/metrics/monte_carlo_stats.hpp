@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <span>
+#include <vector>
 
 namespace kestrel::sim {
 
@@ -19,5 +20,14 @@ struct MeanCi {
 
 /// Mean and 95 % interval of the finite values; all NaN if there are none.
 MeanCi mean_ci95(std::span<const double> values);
+
+/// mean_ci95 of a per-run figure, figure(run), over the runs.
+template <class Run, class Figure>
+MeanCi mean_ci95_of(const std::vector<Run>& runs, Figure figure) {
+  std::vector<double> values;
+  values.reserve(runs.size());
+  for (const Run& r : runs) values.push_back(static_cast<double>(figure(r)));
+  return mean_ci95(values);
+}
 
 }  // namespace kestrel::sim

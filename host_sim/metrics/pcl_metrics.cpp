@@ -101,16 +101,9 @@ PclRunMetrics score_pcl_run(const PclScenarioRun& run, const PclRunOutput& out, 
 PclSummary summarise_pcl(const std::vector<PclRunMetrics>& runs, std::uint64_t budget_ns) {
   PclSummary s;
   s.runs = runs.size();
-  std::vector<double> acc, cov, fal, rb, drb, ttc;
   std::vector<std::uint64_t> steps;
   std::size_t acc_num = 0, acc_den = 0, cov_num = 0, cov_den = 0;
   for (const PclRunMetrics& r : runs) {
-    acc.push_back(r.association_accuracy);
-    cov.push_back(r.coverage);
-    fal.push_back(static_cast<double>(r.false_tracks));
-    rb.push_back(r.rb_rmse_m);
-    drb.push_back(r.drb_rmse_mps);
-    ttc.push_back(r.time_to_confirm_s);
     acc_num += r.assoc_correct;
     acc_den += r.assoc_frames;
     cov_num += r.covered_frames;
@@ -128,12 +121,13 @@ PclSummary summarise_pcl(const std::vector<PclRunMetrics>& runs, std::uint64_t b
     s.frames_refused += r.frames_refused;
     steps.insert(steps.end(), r.step_ns.begin(), r.step_ns.end());
   }
-  s.association_accuracy = mean_ci95(acc);
-  s.coverage = mean_ci95(cov);
-  s.false_tracks = mean_ci95(fal);
-  s.rb_rmse_m = mean_ci95(rb);
-  s.drb_rmse_mps = mean_ci95(drb);
-  s.time_to_confirm_s = mean_ci95(ttc);
+  using R = PclRunMetrics;
+  s.association_accuracy = mean_ci95_of(runs, [](const R& r) { return r.association_accuracy; });
+  s.coverage = mean_ci95_of(runs, [](const R& r) { return r.coverage; });
+  s.false_tracks = mean_ci95_of(runs, [](const R& r) { return r.false_tracks; });
+  s.rb_rmse_m = mean_ci95_of(runs, [](const R& r) { return r.rb_rmse_m; });
+  s.drb_rmse_mps = mean_ci95_of(runs, [](const R& r) { return r.drb_rmse_mps; });
+  s.time_to_confirm_s = mean_ci95_of(runs, [](const R& r) { return r.time_to_confirm_s; });
   s.pooled_accuracy = ratio(acc_num, acc_den);
   s.pooled_coverage = ratio(cov_num, cov_den);
   s.timing = summarise_step_times(steps, budget_ns);

@@ -17,13 +17,6 @@ std::uint32_t channel_bit(const SonarArrivalRecord& a) {
   return 1u << (2u * a.beacon + static_cast<std::uint32_t>(a.path));
 }
 
-MeanCi field_ci(const std::vector<SonarRunMetrics>& runs, double SonarRunMetrics::*field) {
-  std::vector<double> v;
-  v.reserve(runs.size());
-  for (const SonarRunMetrics& r : runs) v.push_back(r.*field);
-  return mean_ci95(v);
-}
-
 }  // namespace
 
 SonarRunMetrics score_sonar_run(const SonarScenarioRun& run, const SonarRunOutput& out) {
@@ -99,13 +92,13 @@ SonarRunMetrics score_sonar_run(const SonarScenarioRun& run, const SonarRunOutpu
 SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint64_t budget_ns) {
   SonarSummary s;
   s.runs = runs.size();
-  s.rmse_3d_m = field_ci(runs, &SonarRunMetrics::rmse_3d_m);
-  s.rmse_h_m = field_ci(runs, &SonarRunMetrics::rmse_h_m);
-  s.rmse_depth_m = field_ci(runs, &SonarRunMetrics::rmse_depth_m);
-  s.peak_3d_m = field_ci(runs, &SonarRunMetrics::peak_3d_m);
-  s.nees = field_ci(runs, &SonarRunMetrics::nees);
-  s.c_err_std_mps = field_ci(runs, &SonarRunMetrics::c_err_std_mps);
-  s.c_err_mean_mps = field_ci(runs, &SonarRunMetrics::c_err_mean_mps);
+  s.rmse_3d_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.rmse_3d_m; });
+  s.rmse_h_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.rmse_h_m; });
+  s.rmse_depth_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.rmse_depth_m; });
+  s.peak_3d_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.peak_3d_m; });
+  s.nees = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.nees; });
+  s.c_err_std_mps = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.c_err_std_mps; });
+  s.c_err_mean_mps = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.c_err_mean_mps; });
   std::size_t frames = 0;
   for (const SonarRunMetrics& r : runs) frames = std::max(frames, r.e3_sq.size());
   std::vector<double> a3(frames, 0.0), ah(frames, 0.0), ad(frames, 0.0), ac(frames, 0.0);

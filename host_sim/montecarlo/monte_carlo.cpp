@@ -60,24 +60,14 @@ MonteCarloResult run_monte_carlo(const Scenario& scenario, const FilterEntry& fi
 MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t budget_ns) {
   MonteCarloSummary s;
   s.runs = runs.size();
-  std::vector<double> rmse, peak, nees, nis, loss, recovery, switches, held, episodes, ids, false_tracks;
+  std::vector<double> recovery;
   s.worst_held_fraction = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::uint64_t> all_steps;
   for (const RunRecord& r : runs) {
-    rmse.push_back(r.metrics.rmse_m);
-    peak.push_back(r.metrics.peak_m);
-    nees.push_back(r.metrics.nees_pos);
-    nis.push_back(r.metrics.nis);
-    loss.push_back(r.metrics.track_loss_s);
-    switches.push_back(static_cast<double>(r.track_switches));
-    held.push_back(r.continuity.held_fraction);
     const double f = r.continuity.held_fraction;
     if (std::isfinite(f) && (std::isnan(s.worst_held_fraction) || f < s.worst_held_fraction)) {
       s.worst_held_fraction = f;
     }
-    episodes.push_back(static_cast<double>(r.metrics.episodes.size()));
-    ids.push_back(static_cast<double>(r.continuity.track_ids_on_target));
-    false_tracks.push_back(static_cast<double>(r.continuity.false_tracks));
     s.max_track_ids_on_target = std::max(s.max_track_ids_on_target, r.continuity.track_ids_on_target);
     // docs/metrics.md: recovery is averaged over the runs that had an episode.
     if (!r.metrics.episodes.empty()) recovery.push_back(r.metrics.recovery_s);
@@ -88,17 +78,18 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
     s.frames_not_ok += r.frames_not_ok;
     all_steps.insert(all_steps.end(), r.step_ns.begin(), r.step_ns.end());
   }
-  s.rmse_m = mean_ci95(rmse);
-  s.peak_m = mean_ci95(peak);
-  s.nees_pos = mean_ci95(nees);
-  s.nis = mean_ci95(nis);
-  s.track_loss_s = mean_ci95(loss);
+  using R = RunRecord;
+  s.rmse_m = mean_ci95_of(runs, [](const R& r) { return r.metrics.rmse_m; });
+  s.peak_m = mean_ci95_of(runs, [](const R& r) { return r.metrics.peak_m; });
+  s.nees_pos = mean_ci95_of(runs, [](const R& r) { return r.metrics.nees_pos; });
+  s.nis = mean_ci95_of(runs, [](const R& r) { return r.metrics.nis; });
+  s.track_loss_s = mean_ci95_of(runs, [](const R& r) { return r.metrics.track_loss_s; });
   s.recovery_s = mean_ci95(recovery);
-  s.track_switches = mean_ci95(switches);
-  s.held_fraction = mean_ci95(held);
-  s.loss_episodes = mean_ci95(episodes);
-  s.track_ids_on_target = mean_ci95(ids);
-  s.false_tracks = mean_ci95(false_tracks);
+  s.track_switches = mean_ci95_of(runs, [](const R& r) { return r.track_switches; });
+  s.held_fraction = mean_ci95_of(runs, [](const R& r) { return r.continuity.held_fraction; });
+  s.loss_episodes = mean_ci95_of(runs, [](const R& r) { return r.metrics.episodes.size(); });
+  s.track_ids_on_target = mean_ci95_of(runs, [](const R& r) { return r.continuity.track_ids_on_target; });
+  s.false_tracks = mean_ci95_of(runs, [](const R& r) { return r.continuity.false_tracks; });
   s.timing = summarise_step_times(all_steps, budget_ns);
   return s;
 }

@@ -30,6 +30,11 @@ nlohmann::json interval_json(const MeanCi& m) {
           {"n", m.n}};
 }
 
+nlohmann::json step_ns_json(const StepTiming& t) {
+  return {{"min", t.min_ns},   {"median", t.median_ns}, {"p99", t.p99_ns},          {"max", t.max_ns},
+          {"mean", t.mean_ns}, {"steps", t.steps},      {"budget_ns", t.budget_ns}, {"overruns", t.overruns}};
+}
+
 void write_json_file(const std::filesystem::path& path, const nlohmann::json& j) {
   std::ofstream out = open_out(path);
   out << j.dump(2) << '\n';

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // What every result file of kestrel-sim is written with: the output stream
-// (10 significant digits), a CSV cell, the JSON of a number or an interval
-// (NaN as null), a JSON file, and the text of a number or an interval in
+// (10 significant digits), a CSV cell, the JSON of a number, an interval
+// (NaN as null) or step times, a JSON file, and the text of a number or an interval in
 // tables and printed lines.
 #pragma once
 
@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "metrics/monte_carlo_stats.hpp"
+#include "timing/step_timing.hpp"
 
 namespace kestrel::sim {
 
@@ -27,6 +28,10 @@ nlohmann::json number_or_null(double v);
 
 /// {mean, ci95_low, ci95_high, n}, non-finite bounds as null.
 nlohmann::json interval_json(const MeanCi& m);
+
+/// {min, median, p99, max, mean, steps, budget_ns, overruns}: the step_ns
+/// object of every summary.json entry.
+nlohmann::json step_ns_json(const StepTiming& t);
 
 /// `j` indented by 2 and a newline; throws std::runtime_error naming `path`
 /// if it cannot be created or written.

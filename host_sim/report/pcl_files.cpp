@@ -138,7 +138,7 @@ nlohmann::json pcl_tracker_json(const PclTrackerParams& p, const TrackerPolicies
 
 nlohmann::json pcl_summary_json(const PclScenarioParams& sc, const PclTrackerParams& p, const PclMonteCarloParams& c,
                                 const PclSummary& s) {
-  return {
+  nlohmann::json j = {
       {"kind", sensor_kind_name(hal::FrameKind::kPcl)},
       {"scenario", pcl_scenario_json(sc)},
       {"tracker", pcl_tracker_json(p, c.policies)},
@@ -164,17 +164,10 @@ nlohmann::json pcl_summary_json(const PclScenarioParams& sc, const PclTrackerPar
       {"vetoed_starts", s.refused_starts},
       {"dropped_starts", s.dropped_starts},
       {"max_tracks_in_table", s.max_tracks_in_table},
-      {"step_ns",
-       {{"min", s.timing.min_ns},
-        {"median", s.timing.median_ns},
-        {"p99", s.timing.p99_ns},
-        {"max", s.timing.max_ns},
-        {"mean", s.timing.mean_ns},
-        {"steps", s.timing.steps},
-        {"budget_ns", s.timing.budget_ns},
-        {"overruns", s.timing.overruns},
-        {"jobs", c.jobs}}},
   };
+  j["step_ns"] = step_ns_json(s.timing);
+  j["step_ns"]["jobs"] = c.jobs;
+  return j;
 }
 
 bool plot_pcl(const std::filesystem::path& dir, const std::string& title) {

@@ -166,9 +166,7 @@ nlohmann::json sonar_summary_json(const SonarScenarioParams& sc, const SonarTrac
                    {"rmse_h_m", series(s.step_rmse_h_m)},
                    {"rmse_depth_m", series(s.step_rmse_depth_m)},
                    {"c_err_rms_mps", series(s.step_c_err_rms_mps)}};
-  j["timing_ns"] = {{"steps", s.timing.steps},       {"min", s.timing.min_ns},   {"median", s.timing.median_ns},
-                    {"p99", s.timing.p99_ns},         {"max", s.timing.max_ns},   {"mean", s.timing.mean_ns},
-                    {"budget", s.timing.budget_ns},   {"overruns", s.timing.overruns}};
+  j["step_ns"] = step_ns_json(s.timing);
   return j;
 }
 

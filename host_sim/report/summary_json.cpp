@@ -34,15 +34,7 @@ nlohmann::json summary_metrics(const MonteCarloSummary& s) {
       {"track_ids_on_target", interval_json(s.track_ids_on_target)},
       {"max_track_ids_on_target", s.max_track_ids_on_target},
       {"false_confirmed_tracks_per_run", interval_json(s.false_tracks)},
-      {"step_ns",
-       {{"min", s.timing.min_ns},
-        {"median", s.timing.median_ns},
-        {"p99", s.timing.p99_ns},
-        {"max", s.timing.max_ns},
-        {"mean", s.timing.mean_ns},
-        {"steps", s.timing.steps},
-        {"budget_ns", s.timing.budget_ns},
-        {"overruns", s.timing.overruns}}},
+      {"step_ns", step_ns_json(s.timing)},
   };
 }
 
