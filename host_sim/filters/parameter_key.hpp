@@ -8,7 +8,6 @@
 #pragma once
 
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <type_traits>
 
@@ -41,7 +40,7 @@ struct ParameterKey {
   KeyType type;
   KeyRange range;
   double (*get)(const P&);     ///< The field as a double (a bool 0 or 1, a gate its probability).
-  void (*set)(P&, double);     ///< Only after check_key_value() accepted the value.
+  void (*set)(P&, double);     ///< Only with a value key_accepts() accepted.
   const char* meaning;
   bool from_scenario = false;  ///< The scenario sets its default (the sensor's figure).
 };

@@ -172,8 +172,15 @@ SCENARIO("An unknown key or a value out of range is refused by name and changes 
       {"bogus=1"},           {"confirm_n=9"},           {"confirm_m=0"},         {"confirm_m=2.5"},
       {"confirm_m=4", "confirm_n=3"}, {"gate_probability=0.97"}, {"robust_gate_factor=0.5"},
       {"max_coast_misses=-1"}, {"qj=0"},                {"sigma_range_m=-3"},     {"board_gate=2"},
-      {"resync_frames=256"}, {"max_forward_jump_us=0"}, {"imm.=1"},
+      {"resync_frames=256"}, {"max_forward_jump_us=0"}, {"imm.=1"}, {"seed_from_pairs=2"},
+      {"robust_noise_max_scale=0.5"}, {"robust_noise_gain=1.5"},
   };
+  // The radar keys' ranges read as the PCL and sonar keys' do.
+  CHECK_THAT(refusal({"robust_noise_max_scale=0.5"}, o), Catch::Contains("=0.5: out of range (>= 1)"));
+  CHECK_THAT(refusal({"seed_from_pairs=2"}, o), Catch::Contains("=2: out of range (false or true)"));
+  CHECK_THAT(refusal({"confirm_n=9"}, o), Catch::Contains("=9: out of range (whole, 1..8)"));
+  CHECK_THAT(refusal({"gate_probability=0.97"}, o), Catch::Contains("out of range (0.9, 0.95, 0.99, 0.995, 0.999)"));
+  CHECK_THAT(refusal({"max_forward_jump_us=0"}, o), Catch::Contains("out of range (whole, > 0, <= 9007199254740992)"));
   CHECK_THAT(refusal({"bogus=1"}, o), Catch::EndsWith("`kestrel-sim list --settings`"));
   CHECK_THAT(refusal({"bogus=1"}, o), !Catch::Contains("it is a key of"));
   CHECK_THAT(refusal({"sigma_rb_m=2"}, o),
