@@ -13,20 +13,23 @@ namespace kestrel::sim {
 
 namespace {
 
+/// make_ekf_ca_tracker's tracker, off the stack.
+template <class Scalar>
+std::unique_ptr<SimRadarTracker<EkfCa<Scalar>>> ekf_ca_tracker_on_heap(const FilterOptions& options) {
+  const RadarTrackerParams p = radar_tracker_params(options);
+  return make_sim_radar_tracker<SimRadarTracker<EkfCa<Scalar>>>(ca_polar_filter<EkfCa<Scalar>>(p), options, p);
+}
+
 template <class Scalar>
 StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  const RadarTrackerParams p = radar_tracker_params(options);
-  const auto tracker =
-      make_sim_radar_tracker<SimRadarTracker<EkfCa<Scalar>>>(ca_polar_filter<EkfCa<Scalar>>(p), options, p);
-  return run_stream(*tracker, std::move(stream), budget_ns);
+  return run_stream(*ekf_ca_tracker_on_heap<Scalar>(options), std::move(stream), budget_ns);
 }
 
 }  // namespace
 
 template <class Scalar>
 SimRadarTracker<EkfCa<Scalar>> make_ekf_ca_tracker(const FilterOptions& options) {
-  const RadarTrackerParams p = radar_tracker_params(options);
-  return *make_sim_radar_tracker<SimRadarTracker<EkfCa<Scalar>>>(ca_polar_filter<EkfCa<Scalar>>(p), options, p);
+  return *ekf_ca_tracker_on_heap<Scalar>(options);
 }
 
 template SimRadarTracker<EkfCa<double>> make_ekf_ca_tracker<double>(const FilterOptions&);

@@ -63,12 +63,17 @@ void apply(RadarImmParams& p, const std::string& item) {
   }
 }
 
+/// make_imm_tracker's tracker, off the stack.
+template <class Scalar>
+std::unique_ptr<SimRadarTracker<RadarImm<Scalar>>> imm_tracker_on_heap(const FilterOptions& options) {
+  const RadarTrackerParams tp = radar_tracker_params(options);  // initiation and management of "ekf-ca"
+  return make_sim_radar_tracker<SimRadarTracker<RadarImm<Scalar>>>(make_radar_imm<Scalar>(imm_params(options)),
+                                                                    options, tp);
+}
+
 template <class Scalar>
 StreamRunResult run_typed(StreamInput stream, const FilterOptions& options, std::uint64_t budget_ns) {
-  using Tracker = SimRadarTracker<RadarImm<Scalar>>;
-  // The tracker holds the whole track table: keep it off the stack.
-  auto tracker = std::make_unique<Tracker>(make_imm_tracker<Scalar>(options));
-  StreamRunResult r = run_stream(*tracker, std::move(stream), budget_ns);
+  StreamRunResult r = run_stream(*imm_tracker_on_heap<Scalar>(options), std::move(stream), budget_ns);
   r.mode_names = {"cv", "ca", "ct"};  // RadarImm's mode order
   return r;
 }
@@ -120,9 +125,7 @@ RadarImmParams imm_params(const FilterOptions& options) {
 
 template <class Scalar>
 SimRadarTracker<RadarImm<Scalar>> make_imm_tracker(const FilterOptions& options) {
-  const RadarTrackerParams tp = radar_tracker_params(options);  // initiation and management of "ekf-ca"
-  return *make_sim_radar_tracker<SimRadarTracker<RadarImm<Scalar>>>(make_radar_imm<Scalar>(imm_params(options)),
-                                                                     options, tp);
+  return *imm_tracker_on_heap<Scalar>(options);
 }
 
 template SimRadarTracker<RadarImm<double>> make_imm_tracker<double>(const FilterOptions&);

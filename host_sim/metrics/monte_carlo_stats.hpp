@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -21,12 +22,13 @@ struct MeanCi {
 /// Mean and 95 % interval of the finite values; all NaN if there are none.
 MeanCi mean_ci95(std::span<const double> values);
 
-/// mean_ci95 of a per-run figure, figure(run), over the runs.
+/// mean_ci95 of a per-run figure over the runs: `figure` is a field of Run
+/// (&Run::rmse_m) or a function of a run.
 template <class Run, class Figure>
 MeanCi mean_ci95_of(const std::vector<Run>& runs, Figure figure) {
   std::vector<double> values;
   values.reserve(runs.size());
-  for (const Run& r : runs) values.push_back(static_cast<double>(figure(r)));
+  for (const Run& r : runs) values.push_back(static_cast<double>(std::invoke(figure, r)));
   return mean_ci95(values);
 }
 

@@ -121,13 +121,12 @@ PclSummary summarise_pcl(const std::vector<PclRunMetrics>& runs, std::uint64_t b
     s.frames_refused += r.frames_refused;
     steps.insert(steps.end(), r.step_ns.begin(), r.step_ns.end());
   }
-  using R = PclRunMetrics;
-  s.association_accuracy = mean_ci95_of(runs, [](const R& r) { return r.association_accuracy; });
-  s.coverage = mean_ci95_of(runs, [](const R& r) { return r.coverage; });
-  s.false_tracks = mean_ci95_of(runs, [](const R& r) { return r.false_tracks; });
-  s.rb_rmse_m = mean_ci95_of(runs, [](const R& r) { return r.rb_rmse_m; });
-  s.drb_rmse_mps = mean_ci95_of(runs, [](const R& r) { return r.drb_rmse_mps; });
-  s.time_to_confirm_s = mean_ci95_of(runs, [](const R& r) { return r.time_to_confirm_s; });
+  s.association_accuracy = mean_ci95_of(runs, &PclRunMetrics::association_accuracy);
+  s.coverage = mean_ci95_of(runs, &PclRunMetrics::coverage);
+  s.false_tracks = mean_ci95_of(runs, &PclRunMetrics::false_tracks);
+  s.rb_rmse_m = mean_ci95_of(runs, &PclRunMetrics::rb_rmse_m);
+  s.drb_rmse_mps = mean_ci95_of(runs, &PclRunMetrics::drb_rmse_mps);
+  s.time_to_confirm_s = mean_ci95_of(runs, &PclRunMetrics::time_to_confirm_s);
   s.pooled_accuracy = ratio(acc_num, acc_den);
   s.pooled_coverage = ratio(cov_num, cov_den);
   s.timing = summarise_step_times(steps, budget_ns);

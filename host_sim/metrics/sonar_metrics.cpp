@@ -92,13 +92,13 @@ SonarRunMetrics score_sonar_run(const SonarScenarioRun& run, const SonarRunOutpu
 SonarSummary summarise_sonar(const std::vector<SonarRunMetrics>& runs, std::uint64_t budget_ns) {
   SonarSummary s;
   s.runs = runs.size();
-  s.rmse_3d_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.rmse_3d_m; });
-  s.rmse_h_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.rmse_h_m; });
-  s.rmse_depth_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.rmse_depth_m; });
-  s.peak_3d_m = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.peak_3d_m; });
-  s.nees = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.nees; });
-  s.c_err_std_mps = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.c_err_std_mps; });
-  s.c_err_mean_mps = mean_ci95_of(runs, [](const SonarRunMetrics& r) { return r.c_err_mean_mps; });
+  s.rmse_3d_m = mean_ci95_of(runs, &SonarRunMetrics::rmse_3d_m);
+  s.rmse_h_m = mean_ci95_of(runs, &SonarRunMetrics::rmse_h_m);
+  s.rmse_depth_m = mean_ci95_of(runs, &SonarRunMetrics::rmse_depth_m);
+  s.peak_3d_m = mean_ci95_of(runs, &SonarRunMetrics::peak_3d_m);
+  s.nees = mean_ci95_of(runs, &SonarRunMetrics::nees);
+  s.c_err_std_mps = mean_ci95_of(runs, &SonarRunMetrics::c_err_std_mps);
+  s.c_err_mean_mps = mean_ci95_of(runs, &SonarRunMetrics::c_err_mean_mps);
   std::size_t frames = 0;
   for (const SonarRunMetrics& r : runs) frames = std::max(frames, r.e3_sq.size());
   std::vector<double> a3(frames, 0.0), ah(frames, 0.0), ad(frames, 0.0), ac(frames, 0.0);

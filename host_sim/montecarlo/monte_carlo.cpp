@@ -85,7 +85,7 @@ MonteCarloSummary summarise(const std::vector<RunRecord>& runs, std::uint64_t bu
   s.nis = mean_ci95_of(runs, [](const R& r) { return r.metrics.nis; });
   s.track_loss_s = mean_ci95_of(runs, [](const R& r) { return r.metrics.track_loss_s; });
   s.recovery_s = mean_ci95(recovery);
-  s.track_switches = mean_ci95_of(runs, [](const R& r) { return r.track_switches; });
+  s.track_switches = mean_ci95_of(runs, &R::track_switches);
   s.held_fraction = mean_ci95_of(runs, [](const R& r) { return r.continuity.held_fraction; });
   s.loss_episodes = mean_ci95_of(runs, [](const R& r) { return r.metrics.episodes.size(); });
   s.track_ids_on_target = mean_ci95_of(runs, [](const R& r) { return r.continuity.track_ids_on_target; });
