@@ -15,6 +15,7 @@
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/hal/pcl_adapter.hpp"
 #include "kestrel/host/board.hpp"
+#include "pipeline/poll_frames.hpp"
 #include "stream/stream_writer.hpp"
 
 namespace kestrel::sim {
@@ -88,14 +89,11 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const PclTargetLocator&
   const double nan = std::numeric_limits<double>::quiet_NaN();
   std::vector<PclTrackRow> previous;
   double previous_t_s = 0.0;
-  for (std::size_t k = 0; k < max_polls; ++k) {
-    const std::size_t first = sink.size();
-    const std::uint32_t steps_before = runner->stats().steps;
+  poll_frames(*runner, sink, max_polls, [&](const PolledFrame& polled) {
     PclFrameOutcome f;
-    f.status = runner->poll_once();
-    if (f.status == Status::kNoData) break;
-    f.stepped = runner->stats().steps != steps_before;
-    f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
+    f.status = polled.status;
+    f.stepped = polled.stepped;
+    f.step_ns = polled.step_ns;
     const double t_s = f.stepped ? static_cast<double>(runner->last_frame().t_us) * 1e-6 : previous_t_s;
     f.t_s = f.stepped ? t_s : nan;
     // Scan entry -> wire index: the adapter keeps candidates in frame order,
@@ -118,7 +116,7 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const PclTargetLocator&
       }
     }
     const auto reports = sink.reports();
-    for (std::size_t i = first; i < sink.size(); ++i) {
+    for (std::size_t i = polled.first_report; i < polled.end_report; ++i) {
       const Report& r = reports[i];
       PclTrackRow row;
       row.id = r.track_id;
@@ -150,7 +148,7 @@ PclRunOutput run_typed(std::vector<std::uint8_t> stream, const PclTargetLocator&
       previous_t_s = t_s;
     }
     out.frames.push_back(std::move(f));
-  }
+  });
   out.stats = runner->stats();
   return out;
 }

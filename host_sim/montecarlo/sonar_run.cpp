@@ -12,6 +12,7 @@
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/hal/sonar_adapter.hpp"
 #include "kestrel/host/board.hpp"
+#include "pipeline/poll_frames.hpp"
 #include "stream/stream_writer.hpp"
 
 namespace kestrel::sim {
@@ -66,14 +67,11 @@ SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTra
   auto runner = std::make_unique<Runner>(feed, clock, *tracker, adapter, sink, budget_ns);
 
   SonarRunOutput out;
-  for (std::size_t k = 0; k < max_polls; ++k) {
-    const std::size_t first = sink.size();
-    const std::uint32_t steps_before = runner->stats().steps;
+  poll_frames(*runner, sink, max_polls, [&](const PolledFrame& polled) {
     SonarFrameOutcome f;
-    f.status = runner->poll_once();
-    if (f.status == Status::kNoData) break;
-    f.stepped = runner->stats().steps != steps_before;
-    f.step_ns = f.stepped ? runner->stats().last_cycles : 0;
+    f.status = polled.status;
+    f.stepped = polled.stepped;
+    f.step_ns = polled.step_ns;
     f.t_s = f.stepped ? static_cast<double>(runner->last_frame().t_us) * 1e-6 : std::nan("");
     if (f.stepped) {
       const SonarStepStats& st = tracker->last_step();
@@ -83,8 +81,8 @@ SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTra
       f.fused = st.fused_mask;
       f.gated = st.gated_mask;
     }
-    if (sink.size() > first) {
-      const Report& r = sink.reports()[first];
+    if (polled.end_report > polled.first_report) {
+      const Report& r = sink.reports()[polled.first_report];
       f.reported = true;
       f.track_id = r.track_id;
       for (int i = 0; i < 7; ++i) {
@@ -97,7 +95,7 @@ SonarRunOutput run_sonar_stream(std::vector<std::uint8_t> stream, const SonarTra
       f.nis = r.nis;
     }
     out.frames.push_back(f);
-  }
+  });
   out.stats = runner->stats();
   return out;
 }

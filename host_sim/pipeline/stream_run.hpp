@@ -25,6 +25,7 @@
 #include "kestrel/hal/frame_format.hpp"
 #include "kestrel/host/board.hpp"
 #include "kestrel/host/track_row.hpp"
+#include "pipeline/poll_frames.hpp"
 #include "pipeline/stream_run_result.hpp"
 
 namespace kestrel::sim {
@@ -102,6 +103,7 @@ class StreamRun {
   StreamRun(Tracker& tracker, std::vector<std::uint8_t> stream, std::uint64_t budget_ns,
             std::optional<hal::asterix::Cat062Source> cat062 = std::nullopt)
       : max_frames_(max_frames_of(stream)),
+        max_polls_(std::is_same_v<Feed, host::AsterixFileFeed> ? max_frames_ : stream.size() + 1),
         feed_(std::move(stream)),
         sink_(max_frames_ * Tracker::Table::kMaxTracks, cat062),
         runner_(feed_, clock_, tracker, hal::RadarAdapter{}, sink_, budget_ns),
@@ -112,23 +114,15 @@ class StreamRun {
 
   /// Poll until the feed is exhausted. No allocation.
   void run_to_end() {
-    for (;;) {
-      const std::size_t first_report = sink_.size();
-      const std::uint32_t steps_before = runner_.stats().steps;
-      const Status status = runner_.poll_once();
-      if (status == Status::kNoData) break;
+    poll_frames(runner_, sink_, max_polls_, [this](const PolledFrame& polled) {
       FrameRecord r;
-      r.status = status;
-      r.stepped = runner_.stats().steps != steps_before;
-      r.step_ns = r.stepped ? runner_.stats().last_cycles : 0;
+      r.polled = polled;
       // The frame's time is only known if it decoded.
-      r.decoded = status_means_decoded(status);
+      r.decoded = status_means_decoded(polled.status);
       r.t_us = r.decoded ? runner_.last_frame().t_us : 0;
-      r.first_report = first_report;
-      r.end_report = sink_.size();
-      records_.push_back(r);  // within the reserved capacity: a frame is at least kSmallestFrameBytes
-      if constexpr (kHasModes) record_modes(first_report, r.end_report);
-    }
+      records_.push_back(r);  // within the reserved capacity unless garbage splits the stream finer
+      if constexpr (kHasModes) record_modes(polled.first_report, polled.end_report);
+    });
   }
 
   /// Flatten the run: per frame its status, step time and reports as rows.
@@ -141,15 +135,16 @@ class StreamRun {
     out.frames.reserve(records_.size());
     const std::span<const Report> reports = sink_.reports();
     for (const FrameRecord& r : records_) {
+      const PolledFrame& p = r.polled;
       FrameOutcome f;
-      f.status = r.status;
+      f.status = p.status;
       f.decoded = r.decoded;
-      f.stepped = r.stepped;
-      f.step_ns = r.step_ns;
+      f.stepped = p.stepped;
+      f.step_ns = p.step_ns;
       f.t_us = r.t_us;
-      for (std::size_t i = r.first_report; i < r.end_report; ++i) f.tracks.push_back(host::to_track_row(reports[i]));
+      for (std::size_t i = p.first_report; i < p.end_report; ++i) f.tracks.push_back(host::to_track_row(reports[i]));
       if constexpr (kHasModes) {
-        for (std::size_t i = r.first_report; i < r.end_report; ++i) {
+        for (std::size_t i = p.first_report; i < p.end_report; ++i) {
           f.mode_probabilities.emplace_back(modes_[i].begin(), modes_[i].end());
         }
       }
@@ -163,10 +158,12 @@ class StreamRun {
  private:
   static constexpr std::size_t kSmallestFrameBytes = hal::wire::frame_size(hal::FrameKind::kRadar, 0);
 
-  // Polls that can return something other than kNoData: for a wire stream
-  // one per smallest frame; for a CAT048 recording counted by a dry run of
-  // the same feed (a record can be 10 bytes, so a bound from the size
-  // alone would reserve far more than a long recording needs).
+  // Polls that can return something other than kNoData, as reserved for:
+  // for a wire stream one per smallest frame (garbage between frames can
+  // make more: each poll then consumes at least a byte, the loop's bound);
+  // for a CAT048 recording counted by a dry run of the same feed, exact
+  // (a record can be 10 bytes, so a bound from the size alone would
+  // reserve far more than a long recording needs).
   static std::size_t max_frames_of(const std::vector<std::uint8_t>& stream) {
     if constexpr (std::is_same_v<Feed, host::AsterixFileFeed>) {
       host::AsterixFileFeed dry(stream);
@@ -180,13 +177,9 @@ class StreamRun {
   }
 
   struct FrameRecord {
-    Status status = Status::kOk;
+    PolledFrame polled;
     bool decoded = false;
-    bool stepped = false;
-    std::uint64_t step_ns = 0;
     std::int64_t t_us = 0;
-    std::size_t first_report = 0;
-    std::size_t end_report = 0;
   };
 
   static bool status_means_decoded(Status s) {
@@ -227,6 +220,7 @@ class StreamRun {
   }
 
   std::size_t max_frames_;
+  std::size_t max_polls_;
   Feed feed_;
   host::SteadyClock clock_;
   Sink sink_;
