@@ -14,11 +14,15 @@
 // the scan capacity of 16 on purpose). Per plot, one byte: bit 0 set reads a raw
 // range (u32 mm) and bearing (i32 binary angle), clear puts the plot near
 // one of four straight-line targets, so tracks form and live long enough to
-// meet the faults. After every step:
+// meet the faults. The IMM (CV/CA/CT, double and float) runs the same
+// bytes as docs/robustness.md runs it: global nearest neighbour, the robust
+// gate at 25 and the adaptive measurement noise at gain 0.2, so its mixing
+// and its scaled and clipped updates meet the same faults. After every step:
 //   - a refused frame (any status but kOk and kTooManyCandidates) leaves
 //     every track as it was and reports nothing;
 //   - every reported and every initialised track has a finite state and a
-//     positive definite covariance.
+//     positive definite covariance;
+//   - an IMM track's mode probabilities are finite, in [0, 1] and sum to 1.
 #pragma once
 
 #include <cmath>
@@ -26,14 +30,18 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <type_traits>
 
 #include "fuzz_bytes.hpp"
+#include "kestrel/association/global_nearest_neighbour.hpp"
+#include "kestrel/filters/imm_radar.hpp"
 #include "kestrel/hal/frame.hpp"
 #include "kestrel/hal/radar_adapter.hpp"
 #include "kestrel/math/finite.hpp"
 #include "kestrel/math/positive_definite.hpp"
 #include "kestrel/scalar/fixed_point.hpp"
 #include "kestrel/scalar/fixed_point_eigen.hpp"
+#include "kestrel/tracking/measurement_noise.hpp"
 #include "kestrel/tracking/radar_tracker.hpp"
 #include "same_tracks.hpp"
 
@@ -82,9 +90,55 @@ HypothesesRadarTracker<Scalar> make_hypotheses_radar_tracker(const RadarTrackerP
   return HypothesesRadarTracker<Scalar>(board.prototype_filter(), init, board.config());
 }
 
+/// The IMM of docs/robustness.md in the tracker (see the header note).
+template <class Scalar>
+using RobustImmRadarTracker =
+    Tracker<RadarImm<Scalar>, TwoPointHypothesesInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>>, 8, 16,
+            GlobalNearestNeighbour, MOfN, AdaptiveMeasurementNoise>;
+
+/// make_radar_tracker(p)'s initiation and management around the IMM with
+/// p's sensor sigmas, robust gate 25 and adaptive noise gain 0.2; nullptr
+/// if the tracker refuses that noise rule.
+template <class Scalar>
+std::unique_ptr<RobustImmRadarTracker<Scalar>> make_robust_imm_radar_tracker(RadarTrackerParams p) {
+  p.robust_gate_factor = 25.0;
+  p.robust_noise_gain = 0.2;
+  const auto board = make_radar_tracker<Scalar, 8, 16>(p);
+  RadarImmParams ip;
+  ip.sigma_range_m = p.sigma_range_m;
+  ip.sigma_bearing_rad = p.sigma_bearing_rad;
+  TwoPointHypothesesInitiator<CaMotion<Scalar>, CaPolarRadar<Scalar>> init{board.initiator(), 2, true};
+  auto tracker = std::make_unique<RobustImmRadarTracker<Scalar>>(make_radar_imm<Scalar>(ip), init, board.config());
+  if (tracker->configure_measurement_noise(radar_measurement_noise<Scalar>(p)) != Status::kOk) return nullptr;
+  return tracker;
+}
+
+/// For a filter with mode probabilities: nullptr, or what is wrong with
+/// those of an initialised track.
+template <class Tracker>
+const char* mode_probabilities_broken(const Tracker& tracker) {
+  if constexpr (requires(const typename Tracker::TrackT& t) { t.filter.mode_probabilities(); }) {
+    for (const std::size_t i : tracker.tracks().active_slots()) {
+      const auto& tr = tracker.tracks()[i];
+      if (!tr.initialised) continue;
+      const auto& mu = tr.filter.mode_probabilities();
+      double sum = 0.0;
+      for (int j = 0; j < static_cast<int>(mu.size()); ++j) {
+        const double m = static_cast<double>(mu(j));
+        if (!(m >= 0.0 && m <= 1.0)) return "a mode probability is not finite or outside [0, 1]";
+        sum += m;
+      }
+      // float's rounding over three modes, with room to spare.
+      if (!(std::fabs(sum - 1.0) <= 1e-4)) return "the mode probabilities do not sum to 1";
+    }
+  }
+  return nullptr;
+}
+
 /// Runs the bytes through one tracker; nullptr or what broke.
 template <class Tracker>
-const char* check_radar_tracker_invariants_of(std::span<const std::uint8_t> in, const Tracker& start) {
+const char* check_radar_tracker_invariants_of(std::span<const std::uint8_t> in, const Tracker& start,
+                                              FuzzTally* tally = nullptr) {
   // Heap, not stack: the tracker and its snapshot are a few tens of KiB.
   auto tracker = std::make_unique<Tracker>(start);
   auto before = std::make_unique<Tracker>(*tracker);
@@ -98,27 +152,45 @@ const char* check_radar_tracker_invariants_of(std::span<const std::uint8_t> in, 
     *before = *tracker;
     const Status s = tracker->step(scan);
     if (const char* why = step_invariant_broken(*tracker, *before, s)) return why;
+    if (const char* why = mode_probabilities_broken(*tracker)) return why;
+    if (tally != nullptr) {
+      ++tally->frames;
+      tally->refused += s != Status::kOk ? 1 : 0;
+      tally->truncated += converted == Status::kTooManyCandidates ? 1 : 0;
+      tally->reports += static_cast<int>(tracker->reports().size());
+    }
   }
   return nullptr;
 }
 
 /// Runs the bytes through one scalar's trackers; nullptr or what broke.
+/// `imm_tally` (optional) sums what the IMM's run met.
 template <class Scalar>
-const char* check_radar_tracker_invariants_for(std::span<const std::uint8_t> in) {
+const char* check_radar_tracker_invariants_for(std::span<const std::uint8_t> in, FuzzTally* imm_tally) {
   RadarTrackerParams p;
   p.qj = 16.0;
   {
     auto board = std::make_unique<RadarTracker<EkfCa<Scalar>, 8, 16>>(make_radar_tracker<Scalar, 8, 16>(p));
     if (const char* why = check_radar_tracker_invariants_of(in, *board)) return why;
   }
-  auto hypotheses = std::make_unique<HypothesesRadarTracker<Scalar>>(make_hypotheses_radar_tracker<Scalar>(p));
-  return check_radar_tracker_invariants_of(in, *hypotheses);
+  {
+    auto hypotheses = std::make_unique<HypothesesRadarTracker<Scalar>>(make_hypotheses_radar_tracker<Scalar>(p));
+    if (const char* why = check_radar_tracker_invariants_of(in, *hypotheses)) return why;
+  }
+  if constexpr (std::is_floating_point_v<Scalar>) {  // the IMM is double and float
+    const auto imm = make_robust_imm_radar_tracker<Scalar>(p);
+    if (imm == nullptr) return "the IMM tracker refused its adaptive noise rule";
+    return check_radar_tracker_invariants_of(in, *imm, imm_tally);
+  }
+  return nullptr;
 }
 
-inline const char* check_radar_tracker_invariants(std::span<const std::uint8_t> in) {
-  if (const char* why = check_radar_tracker_invariants_for<double>(in)) return why;
-  if (const char* why = check_radar_tracker_invariants_for<float>(in)) return why;
-  return check_radar_tracker_invariants_for<Q31_32>(in);
+/// All scalars; nullptr or what broke. `imm_tally` (optional) sums what
+/// the IMM's runs (double and float) met.
+inline const char* check_radar_tracker_invariants(std::span<const std::uint8_t> in, FuzzTally* imm_tally = nullptr) {
+  if (const char* why = check_radar_tracker_invariants_for<double>(in, imm_tally)) return why;
+  if (const char* why = check_radar_tracker_invariants_for<float>(in, imm_tally)) return why;
+  return check_radar_tracker_invariants_for<Q31_32>(in, imm_tally);
 }
 
 }  // namespace kestrel::test

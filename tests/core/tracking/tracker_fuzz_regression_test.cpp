@@ -79,10 +79,18 @@ int sonar_operand_bytes(std::uint8_t b) { return (b & 0x80u) != 0 ? 5 : 4; }
 }  // namespace
 
 SCENARIO("every radar tracker fuzz corpus input keeps the tracker invariants", "[tracker][fuzz]") {
-  const int inputs = replay_corpus("radar_tracker", [](std::span<const std::uint8_t> bytes) {
-    return kestrel::test::check_radar_tracker_invariants(bytes);
+  FuzzTally imm;
+  const int inputs = replay_corpus("radar_tracker", [&imm](std::span<const std::uint8_t> bytes) {
+    return kestrel::test::check_radar_tracker_invariants(bytes, &imm);
   });
   CHECK(inputs >= 8);
+  // The corpus takes the IMM tracker to confirmed tracks and to refused
+  // and over-capacity frames, so its invariants are checked where they bite.
+  INFO("IMM: frames " << imm.frames << ", reports " << imm.reports << ", refused " << imm.refused << ", cut "
+                      << imm.truncated);
+  CHECK(imm.reports > 500);
+  CHECK(imm.refused >= 20);
+  CHECK(imm.truncated >= 20);
 }
 
 SCENARIO("seeded random inputs keep the radar tracker invariants", "[tracker][fuzz]") {
