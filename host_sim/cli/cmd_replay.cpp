@@ -399,6 +399,12 @@ int cmd_replay(const ReplayOptions& o) {
   if (int{!o.stream.empty()} + int{!o.csv.empty()} + int{!o.asterix.empty()} != 1) {
     throw std::invalid_argument("give exactly one of --stream, --csv and --asterix");
   }
+  for (const char* gate : {"--board-gate", "--gate-d2"}) {
+    if (o.ungated && std::find(o.filter.radar_only_given.begin(), o.filter.radar_only_given.end(), gate) !=
+                         o.filter.radar_only_given.end()) {
+      throw std::invalid_argument(std::string("--ungated and ") + gate + " contradict each other");
+    }
+  }
   // Read (file, syntax) now; whose keys they are is known with the stream's kind.
   const std::vector<Setting> settings = read_settings(o.filter.config, o.filter.sets);
   std::vector<std::uint8_t> bytes;

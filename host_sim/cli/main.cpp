@@ -23,12 +23,22 @@ namespace {
 
 using namespace kestrel::sim::cli;  // NOLINT(google-build-using-namespace): this file wires them up
 
-void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
+// How a command gates confirmed tracks when no option says: `run` and the
+// commands like it score as the papers do (ungated), `replay` as a board.
+enum class ConfirmedGateDefault { kUngated, kBoard };
+
+void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o,
+                       ConfirmedGateDefault gate = ConfirmedGateDefault::kUngated) {
+  const bool board = gate == ConfirmedGateDefault::kBoard;
   cmd->add_option("--qj", o.qj, "White-jerk PSD of CA filters, m^2/s^5 (default 1.6)");
   cmd->add_option("--gate-d2", o.confirmed_gate_d2,
-                  "Gate of confirmed tracks, d2 units (e.g. 13.8 = 0.999 for 2 dof; default: ungated)");
+                  std::string("Gate of confirmed tracks, d2 units (e.g. 13.8 = 0.999 for 2 dof; default: ") +
+                      (board ? "the board's gate, --ungated for none)" : "ungated)"));
   cmd->add_flag("--board-gate", o.board_gate,
-                "Without --gate-d2: gate confirmed tracks as a board does (its chi-square gate) instead of not at all");
+                board ? "Without --gate-d2: gate confirmed tracks as a board does (its chi-square gate); the default "
+                        "here"
+                      : "Without --gate-d2: gate confirmed tracks as a board does (its chi-square gate) instead of "
+                        "not at all");
   cmd->add_option("--robust-gate", o.robust_gate_factor,
                   "With the board's gate: take plots up to this factor x the gate's d2 with a shrunk innovation "
                   "(default 0: off; 25 for a sensor without clutter, docs/robustness.md)");
@@ -37,10 +47,11 @@ void add_model_options(CLI::App* cmd, kestrel::sim::FilterOptions& o) {
 }
 
 // --set is left to the caller when it means more (sweep's value lists).
-void add_filter_options(CLI::App* cmd, FilterChoice& f, bool with_set = true) {
+void add_filter_options(CLI::App* cmd, FilterChoice& f, bool with_set = true,
+                        ConfirmedGateDefault gate = ConfirmedGateDefault::kUngated) {
   cmd->add_option("--filter,-f", f.filter, "Filter (see `list`)")->capture_default_str();
   add_scalar_option(cmd, f.scalar);
-  add_model_options(cmd, f.options);
+  add_model_options(cmd, f.options, gate);
   cmd->add_option("--config", f.config,
                   "JSON file of tracker and filter parameters by key (`list --settings`, docs/parameters.md)");
   if (with_set) {
@@ -160,7 +171,7 @@ int main(int argc, char** argv) {
   replay_cmd->add_option("--scenario,-s", replay.scenario,
                          "PCL or sonar stream: the scenario whose sensor parameters the tracker takes "
                          "(default pcl002 / uw003)");
-  add_filter_options(replay_cmd, replay.filter);
+  add_filter_options(replay_cmd, replay.filter, true, ConfirmedGateDefault::kBoard);
   replay_cmd->add_option("--loss-threshold-m", replay.loss_threshold_m, "L of the track-loss metric, m")
       ->capture_default_str();
   replay_cmd->add_option("--first-scored-step", replay.first_scored_step, "First frame index scored")
