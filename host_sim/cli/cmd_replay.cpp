@@ -468,6 +468,10 @@ int cmd_replay(const ReplayOptions& o) {
   }
 
   if (kind != hal::FrameKind::kRadar) {
+    if (!o.associator.empty()) {
+      throw std::invalid_argument("--associator " + o.associator + ": " + source + " holds " +
+                                  sensor_kind_name(kind) + " frames; the option picks the tracker of a radar stream");
+    }
     if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
     return replay_other_kind(o, kind, std::move(bytes), frames.size() - skipped, source,
                              replay_truth ? &*replay_truth : nullptr, settings);
@@ -482,16 +486,26 @@ int cmd_replay(const ReplayOptions& o) {
   FilterChoice choice = o.filter;
   apply_filter_settings(choice, settings);
   if (replay_truth) check_truth_overlap(*replay_truth, frames, o.truth, source);
-  if (replay_truth && !replay_truth->radar_targets.empty()) {
-    // Several targets: the tracker and scoring of `run` on a multi-target
-    // scenario (run_multi.cpp), over this stream.
+  const bool several_targets = replay_truth && !replay_truth->radar_targets.empty();
+  if (several_targets || !o.associator.empty()) {
+    // The tracker and scoring of `run` on a multi-target scenario
+    // (run_multi.cpp), over this stream; a one-target truth is one target.
     const std::vector<std::string> refused = multi_target_replay_refuses(o);
     if (!refused.empty()) {
-      throw std::invalid_argument("--truth " + o.truth + " holds " + std::to_string(replay_truth->radar_targets.size()) +
-                                  " targets, scored by the multi-target tracker; " + join_names(refused) +
+      const std::string why = several_targets ? "--truth " + o.truth + " holds " +
+                                                    std::to_string(replay_truth->radar_targets.size()) +
+                                                    " targets, scored by the multi-target tracker"
+                                              : "--associator runs the multi-target tracker";
+      throw std::invalid_argument(why + "; " + join_names(refused) +
                                   (refused.size() == 1 ? " does not apply to it" : " do not apply to it"));
     }
-    return replay_multi_target(o, choice, StreamInput(std::move(bytes), format), replay_truth->radar_targets, source);
+    std::vector<std::vector<TruthSample>> targets;
+    if (several_targets) {
+      targets = replay_truth->radar_targets;
+    } else if (replay_truth) {
+      targets.push_back(replay_truth->radar);
+    }
+    return replay_multi_target(o, choice, StreamInput(std::move(bytes), format), targets, source);
   }
   const FilterEntry& filter = find_filter(choice.filter);
 

@@ -180,13 +180,20 @@ struct ReplayOptions {
   /// default gates them as a board does (FilterOptions::board_gate).
   bool ungated = false;
   Cat062Output asterix_out;
+  /// --associator nn|gnn: a radar stream runs the multi-target tracker with
+  /// this associator, scored when a truth is given, tracks only without.
+  /// Empty: the multi-target tracker (GNN) only with the truth of several
+  /// targets, else the filter's own single-target tracker.
+  std::string associator;
 };
-/// `replay` of a radar stream against the truth of several targets (`target`
-/// column, what `generate` writes for a multi-target scenario): the
-/// multi-target tracker `run` uses for such a scenario (GNN, the board's
-/// gate; `filter` ekf-ca or imm with its resolved options) over `input`,
-/// scored with multi's metrics at each frame every target has a truth for;
-/// the track CSV, multi_steps.csv and a summary.json entry. cli/run_multi.cpp.
+/// `replay` of a radar stream by the multi-target tracker `run` uses for a
+/// multi-target scenario (o.associator, GNN by default; the board's gate;
+/// `filter` ekf-ca or imm with its resolved options) over `input`: against
+/// the truth of several targets (`target` column, what `generate` writes
+/// for such a scenario; or one target's) scored with multi's metrics at
+/// each frame every target has a truth for, with the track CSV,
+/// multi_steps.csv and a summary.json entry; with `targets` empty the track
+/// CSV and the entry without metrics. cli/run_multi.cpp.
 int replay_multi_target(const ReplayOptions& o, const FilterChoice& filter, StreamInput input,
                         const std::vector<std::vector<TruthSample>>& targets, const std::string& source);
 /// replay's options given that a multi-target replay does not take.

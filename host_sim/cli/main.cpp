@@ -168,6 +168,11 @@ int main(int argc, char** argv) {
   csv_opt->excludes(stream_opt);
   asterix_opt->excludes(stream_opt)->excludes(csv_opt);
   replay_cmd->add_option("--truth", replay.truth, "Truth CSV (time_s,x_m,y_m,...): score the run");
+  replay_cmd
+      ->add_option("--associator", replay.associator,
+                   "Radar stream: run the multi-target tracker with this associator, nn or gnn (default: gnn with "
+                   "the truth of several targets, else the filter's own tracker)")
+      ->check(CLI::IsMember({"nn", "gnn"}));
   replay_cmd->add_option("--scenario,-s", replay.scenario,
                          "PCL or sonar stream: the scenario whose sensor parameters the tracker takes "
                          "(default pcl002 / uw003)");

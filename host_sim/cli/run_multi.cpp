@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -105,7 +106,7 @@ nlohmann::json summary_json(const Summary& s) {
 /// The results[scenario][filter] entry of summary.json: the settings, the
 /// associator's figures and, with --compare-oracle, the oracle's.
 nlohmann::json summary_entry(const RunOptions& o, const ScenarioInfo& info, const MultiRunParams& config,
-                             const char* filter_label, const Summary& main, const Summary* oracle) {
+                             const char* filter_label, const Summary* main, const Summary* oracle) {
   FilterOptions gate = config.options;
   gate.board_gate = true;  // make_multi_target_tracker gates confirmed tracks as a board does
   const FilterSetup setup = config.filter == MultiFilter::kImm ? imm_setup(gate) : ekf_ca_setup(gate);
@@ -124,7 +125,7 @@ nlohmann::json summary_entry(const RunOptions& o, const ScenarioInfo& info, cons
                           {"cutoff_m", o.kind.cutoff_m},
                           {"order", o.kind.order},
                           {"persistence_steps", o.kind.persistence_steps}};
-  entry.update(summary_json(main));
+  if (main != nullptr) entry.update(summary_json(*main));
   if (oracle != nullptr) entry["oracle"] = summary_json(*oracle);
   return entry;
 }
@@ -246,7 +247,7 @@ int report_multi(const RunOptions& o, const Scenario& scenario, const MultiRunPa
   }
   write_steps_csv(dir / "multi_steps.csv", info, sets);
   merge_summary_file(dir / "summary.json", info.name, multi_filter_name(config.filter),
-                     summary_entry(o, info, config, filter, s, so ? &*so : nullptr));
+                     summary_entry(o, info, config, filter, &s, so ? &*so : nullptr));
   std::printf("wrote %s/{multi_runs.csv, multi_steps.csv, summary.json}\n", dir.c_str());
   if (o.plots && plot_gospa(dir / "multi_steps.csv", dir / "multi_gospa.png",
                             info.name + " / seeds " + std::to_string(o.seed) + ".." +
@@ -278,35 +279,63 @@ int replay_multi_target(const ReplayOptions& r, const FilterChoice& filter, Stre
   o.out = r.out;
   o.plots = r.plots;
   o.filter = filter;
-  o.kind.associator = "gnn";  // as the board's tracker: GNN even if the truth names one target
+  o.kind.associator = r.associator.empty() ? "gnn" : r.associator;  // GNN even if the truth names one target
   ScenarioInfo info;
   info.name = "replay";
   info.targets = targets.size();
   const MultiRunParams config = multi_params(o, info);
   const StreamRunResult stream = run_multi_stream(config, std::move(input));
-  std::size_t without_truth = 0;
-  const std::vector<MultiTargetStep> steps = multi_target_steps_at_times(targets, stream, without_truth);
-  const std::vector<MultiTargetRunMetrics> runs{compute_multi_target_metrics(steps, config.spa, config.persistence_steps)};
-
-  info.steps = steps.size();
   const std::filesystem::path dir(o.out);
   std::filesystem::create_directories(dir);
   const std::string name = multi_filter_name(config.filter);
+  const char* associator = multi_associator_name(config.associator);
   const std::filesystem::path tracks_csv = dir / (name + "_tracks.csv");
   write_track_csv(tracks_csv, stream);
+
+  if (targets.empty()) {
+    std::set<std::uint32_t> ids;
+    std::size_t rows = 0, steps = 0;
+    for (const FrameOutcome& f : stream.frames) {
+      steps += f.stepped ? 1 : 0;
+      for (const host::TrackRow& t : f.tracks) {
+        if (!t.confirmed) continue;
+        ++rows;
+        ids.insert(t.track_id);
+      }
+    }
+    std::printf("replay %s: multi-target tracker, %s, %s; %zu frames stepped, %zu confirmed-track rows, %zu track "
+                "ids; not scored (no --truth)\n",
+                source.c_str(), name.c_str(), associator, steps, rows, ids.size());
+    nlohmann::json entry = summary_entry(o, info, config, name.c_str(), nullptr, nullptr);
+    for (const char* key : {"base_seed", "targets", "runs", "cutoff_m", "order", "persistence_steps"}) entry.erase(key);
+    entry["source"] = source;
+    entry["scored"] = false;
+    entry["frames_stepped"] = steps;
+    entry["confirmed_track_rows"] = rows;
+    entry["track_ids"] = ids.size();
+    merge_summary_file(dir / "summary.json", info.name, name, entry);
+    std::printf("wrote %s, %s\n", tracks_csv.c_str(), (dir / "summary.json").c_str());
+    return 0;
+  }
+
+  std::size_t without_truth = 0;
+  const std::vector<MultiTargetStep> steps = multi_target_steps_at_times(targets, stream, without_truth);
+  const std::vector<MultiTargetRunMetrics> runs{compute_multi_target_metrics(steps, config.spa, config.persistence_steps)};
+  info.steps = steps.size();
   std::vector<double> times_s;
   for (const MultiTargetStep& st : steps) times_s.push_back(st.t_s);
-  write_steps_csv(dir / "multi_steps.csv", info, {{multi_associator_name(config.associator), &runs}}, times_s);
+  write_steps_csv(dir / "multi_steps.csv", info, {{associator, &runs}}, times_s);
   const Summary s = summarise(runs);
   std::printf("replay %s: %zu targets in %s; scored %zu frames (%zu decoded frames at a time without every "
               "target's truth), %s, %s, c %g m, p %g\n",
-              source.c_str(), targets.size(), r.truth.c_str(), steps.size(), without_truth, name.c_str(),
-              multi_associator_name(config.associator), o.kind.cutoff_m, o.kind.order);
-  print_summary(multi_associator_name(config.associator), s);
-  nlohmann::json entry = summary_entry(o, info, config, name.c_str(), s, nullptr);
+              source.c_str(), targets.size(), r.truth.c_str(), steps.size(), without_truth, name.c_str(), associator,
+              o.kind.cutoff_m, o.kind.order);
+  print_summary(associator, s);
+  nlohmann::json entry = summary_entry(o, info, config, name.c_str(), &s, nullptr);
   entry.erase("base_seed");
   entry["source"] = source;
   entry["truth"] = r.truth;
+  entry["scored"] = true;
   entry["truth_frames"] = {{"matched", steps.size()}, {"without_truth", without_truth}};
   merge_summary_file(dir / "summary.json", info.name, name, entry);
   std::printf("wrote %s, %s/{multi_steps.csv, summary.json}\n", tracks_csv.c_str(), dir.c_str());

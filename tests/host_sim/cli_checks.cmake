@@ -567,6 +567,32 @@ elseif(CHECK STREQUAL "replay_multi_target")
      OR EXISTS ${OUT}/refused/summary.json)
     message(FATAL_ERROR "replay --ungated of a multi-target truth was not refused by name (${rc}):\n${out}${err}")
   endif()
+  # --associator gnn without a truth runs the same multi-target tracker:
+  # the same track CSV as the scored replay, a summary entry marked not
+  # scored; --associator nn another one. A PCL stream refuses the option.
+  execute_process(COMMAND ${SIM} replay --stream ${OUT}/crossing.stream --associator gnn --no-plots --out ${OUT}/gnn
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(READ ${OUT}/replay/ekf-ca_tracks.csv scored_tracks)
+  file(READ ${OUT}/gnn/ekf-ca_tracks.csv gnn_tracks)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "multi-target tracker, ekf-ca, gnn; 61 frames stepped, [0-9]+ confirmed-track rows"
+     OR NOT out MATCHES "not scored \\(no --truth\\)" OR NOT gnn_tracks STREQUAL scored_tracks)
+    message(FATAL_ERROR "replay --associator gnn without a truth (${rc}):\n${out}${err}")
+  endif()
+  file(READ ${OUT}/gnn/summary.json summary)
+  string(JSON scored GET "${summary}" results replay ekf-ca scored)
+  string(JSON associator GET "${summary}" results replay ekf-ca associator)
+  if(NOT scored STREQUAL "OFF" OR NOT associator STREQUAL "gnn")
+    message(FATAL_ERROR "replay --associator gnn summary: scored '${scored}', associator '${associator}'")
+  endif()
+  execute_process(COMMAND ${SIM} replay --stream ${OUT}/crossing.stream --truth ${OUT}/crossing.truth.csv
+                          --associator nn --no-plots --out ${OUT}/nn
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "2 targets in [^\n]*; scored 61 frames [^\n]*, ekf-ca, nn, c 500 m")
+    message(FATAL_ERROR "replay --associator nn with the truth (${rc}):\n${out}${err}")
+  endif()
+  generate_stream(pcl002 pcl)
+  expect_replay_error(pcl_gnn "--associator gnn: [^\n]*pcl.kstr holds PCL frames" --stream ${OUT}/pcl.kstr
+                      --associator gnn)
 else()
   message(FATAL_ERROR "unknown CHECK '${CHECK}'")
 endif()
