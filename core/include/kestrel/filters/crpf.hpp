@@ -332,7 +332,9 @@ class Crpf {
  private:
   /// dC(x | z) = sum_c (residual_c(z, h(x)) / s_c)^2 (eqs. 5-6); through the
   /// model's particle_residual() when it has one (see HasParticleResidual).
-  Scalar incremental_cost(const State& x, const MeasVec& z, const MeasVec& inv_scale) const {
+  /// Flattened as well: clang's flatten inlines one call level only, so
+  /// each level down to the atan2 carries it (GCC's inlines them all).
+  [[gnu::flatten]] Scalar incremental_cost(const State& x, const MeasVec& z, const MeasVec& inv_scale) const {
     MeasVec nu;
     if constexpr (HasParticleResidual<Measurement>) {
       nu = measurement_.particle_residual(z, x);
