@@ -23,7 +23,7 @@ struct PolledFrame {
 
 /// Poll `runner` until its feed returns kNoData, at most `max_polls` times
 /// (a bound the caller derives from the stream's size), and call
-/// on_frame(const PolledFrame&) after every other poll.
+/// on_frame(const PolledFrame&) after each poll that returned anything else.
 template <class Runner, class Sink, class OnFrame>
 void poll_frames(Runner& runner, const Sink& sink, std::size_t max_polls, OnFrame&& on_frame) {
   for (std::size_t k = 0; k < max_polls; ++k) {
