@@ -40,34 +40,34 @@ struct Summary {
       time_to_confirm, unconfirmed;
 };
 
-Summary summarise(const std::vector<MultiTargetRunMetrics>& runs) {
-  std::vector<double> gospa, ospa, loc, missed, fps, swaps, no_swap, ft, frag, ttc, unconf;
-  for (const MultiTargetRunMetrics& m : runs) {
-    gospa.push_back(m.mean_gospa_m);
-    ospa.push_back(m.mean_ospa_m);
-    loc.push_back(m.mean_gospa_localisation_m);
-    missed.push_back(m.mean_missed);
-    fps.push_back(m.mean_false);
-    swaps.push_back(static_cast<double>(m.swaps));
-    no_swap.push_back(m.swaps == 0 ? 1.0 : 0.0);
-    ft.push_back(static_cast<double>(m.false_tracks));
-    frag.push_back(static_cast<double>(m.fragmentations));
-    double sum = 0.0;
-    std::size_t n = 0, never = 0;
-    for (const double t : m.time_to_confirm_s) {
-      if (t < 0.0) {
-        ++never;
-      } else {
-        sum += t;
-        ++n;
-      }
-    }
-    ttc.push_back(n > 0 ? sum / static_cast<double>(n) : std::nan(""));
-    unconf.push_back(static_cast<double>(never));
+/// A run's mean time to confirm over the targets it confirmed (NaN if none).
+double mean_time_to_confirm_s(const MultiTargetRunMetrics& m) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (const double t : m.time_to_confirm_s) {
+    if (t < 0.0) continue;  // never confirmed
+    sum += t;
+    ++n;
   }
-  return Summary{mean_ci95(gospa), mean_ci95(ospa),  mean_ci95(loc),   mean_ci95(missed),
-                 mean_ci95(fps),   mean_ci95(swaps), mean_ci95(no_swap), mean_ci95(ft),
-                 mean_ci95(frag),  mean_ci95(ttc),   mean_ci95(unconf)};
+  return n > 0 ? sum / static_cast<double>(n) : std::nan("");
+}
+
+Summary summarise(const std::vector<MultiTargetRunMetrics>& runs) {
+  using M = MultiTargetRunMetrics;
+  const auto never_confirmed = [](const M& m) {
+    return std::count_if(m.time_to_confirm_s.begin(), m.time_to_confirm_s.end(), [](double t) { return t < 0.0; });
+  };
+  return Summary{mean_ci95_of(runs, &M::mean_gospa_m),
+                 mean_ci95_of(runs, &M::mean_ospa_m),
+                 mean_ci95_of(runs, &M::mean_gospa_localisation_m),
+                 mean_ci95_of(runs, &M::mean_missed),
+                 mean_ci95_of(runs, &M::mean_false),
+                 mean_ci95_of(runs, &M::swaps),
+                 mean_ci95_of(runs, [](const M& m) { return m.swaps == 0 ? 1.0 : 0.0; }),
+                 mean_ci95_of(runs, &M::false_tracks),
+                 mean_ci95_of(runs, &M::fragmentations),
+                 mean_ci95_of(runs, mean_time_to_confirm_s),
+                 mean_ci95_of(runs, never_confirmed)};
 }
 
 void print_ci(const char* name, const MeanCi& m, const char* unit) {
