@@ -124,12 +124,13 @@ SCENARIO("the CRPF is bit-identical for the same seed", "[crpf][determinism]") {
 SCENARIO("the CRPF gives the recorded bits on MC-001's middle cell", "[crpf][determinism][golden]") {
   GIVEN("100-step runs: double with 100 particles and beta 2 and with 33 and beta 3 and float with 100") {
     THEN("the hash of every estimate and covariance and particle and cost and weight equals the recorded one") {
-      // Recorded on the host (x86-64, glibc for the data, no FMA) before the
-      // per-particle loops were restructured for speed: any change of the
-      // filter's arithmetic or of its PRNG draws changes these.
-      CHECK(kestrel::test::crpf_trace_hash<double, 100>(3, 7, 2) == 0x1187fbf92a031435ull);
-      CHECK(kestrel::test::crpf_trace_hash<double, 33>(4, 11, 3) == 0xd4f6e32ef25d2c6cull);
-      CHECK(kestrel::test::crpf_trace_hash<float, 100>(3, 7, 2) == 0xaee95b257734a6e4ull);
+      // Recorded on the host (x86-64, glibc for the data, no FMA) when the
+      // particles' bearings moved to PolarRadar::particle_residuals (a small
+      // angle from the predicted mean's bearing): any change of the filter's
+      // arithmetic or of its PRNG draws changes these.
+      CHECK(kestrel::test::crpf_trace_hash<double, 100>(3, 7, 2) == 0x6088139043d971bbull);
+      CHECK(kestrel::test::crpf_trace_hash<double, 33>(4, 11, 3) == 0xed39454b05c421edull);
+      CHECK(kestrel::test::crpf_trace_hash<float, 100>(3, 7, 2) == 0x08b82c303609cc1bull);
     }
   }
 }

@@ -53,11 +53,12 @@ concept HasNoiseGain = requires(const M& m, typename M::Scalar dt) {
   { m.noise_gain(dt) };
 };
 
-/// A measurement model with a residual(z, predict(x)) of its own for
-/// per-particle costs (PolarRadar: a cheaper, libm-independent atan2).
+/// A measurement model that prepares the residuals of many particles
+/// against one z about a reference state (PolarRadar: the bearing as a
+/// small angle from the reference's, not an atan2 per particle).
 template <class H>
-concept HasParticleResidual = requires(const H& h, const typename H::Measurement& z, const typename H::State& x) {
-  { h.particle_residual(z, x) } -> std::same_as<typename H::Measurement>;
+concept HasParticleResiduals = requires(const H& h, const typename H::Measurement& z, const typename H::State& x) {
+  { h.particle_residuals(z, x)(x) } -> std::same_as<typename H::Measurement>;
 };
 
 namespace detail {
@@ -234,7 +235,8 @@ class Crpf {
     // 2. Risk of every noise-free prediction; 3. selection PMF as a cumulative sum.
     Scalar min_risk = T::max_value();
     bool any_finite = false;
-    incremental_costs(xp_, z, inv_scale, cum_);
+    const auto residual_of = particle_residuals(z);
+    incremental_costs(xp_, residual_of, inv_scale, cum_);
     for (int i = 0; i < kParticles; ++i) {
       const Scalar r = lambda * cost[i] + cum_[i];
       cum_[i] = r;
@@ -268,7 +270,7 @@ class Crpf {
     }
     // dC of the new particles after the resampling loop (see
     // incremental_costs), into cum_, which the resampling no longer needs.
-    incremental_costs(next, z, inv_scale, cum_);
+    incremental_costs(next, residual_of, inv_scale, cum_);
     for (int i = 0; i < kParticles; ++i) next_cost[i] += cum_[i];
 
     // 7. Estimate weighted by the updated cost (weights into the scratch
@@ -330,31 +332,26 @@ class Crpf {
   const Diagnostics& diagnostics() const { return diag_; }
 
  private:
-  /// dC(x | z) = sum_c (residual_c(z, h(x)) / s_c)^2 (eqs. 5-6); through the
-  /// model's particle_residual() when it has one (see HasParticleResidual).
-  /// Flattened as well: clang's flatten inlines one call level only, so
-  /// each level down to the atan2 carries it (GCC's inlines them all).
-  [[gnu::flatten]] Scalar incremental_cost(const State& x, const MeasVec& z, const MeasVec& inv_scale) const {
-    MeasVec nu;
-    if constexpr (HasParticleResidual<Measurement>) {
-      nu = measurement_.particle_residual(z, x);
+  /// residual(z, h(x)) of a particle x, for the risk and the cost: the
+  /// model's particle_residuals() about the predicted mean x_hat_ when it
+  /// has them (HasParticleResiduals), residual(z, predict(x)) otherwise.
+  auto particle_residuals(const MeasVec& z) const {
+    if constexpr (HasParticleResiduals<Measurement>) {
+      return measurement_.particle_residuals(z, x_hat_);
     } else {
-      nu = measurement_.residual(z, measurement_.predict(x));
+      return [this, z](const State& x) { return measurement_.residual(z, measurement_.predict(x)); };
     }
-    const MeasVec e = nu.cwiseProduct(inv_scale);
-    return e.squaredNorm();
   }
 
-  /// dc[i] = incremental_cost(x[i], z, inv_scale) for every particle, in a
-  /// loop of its own: no data-dependent branch (resampling pointer, minimum)
-  /// between the h(x) of successive particles, so their independent
-  /// evaluations overlap in the pipeline. The same bits as one call each.
-  /// Flattened: the atan2 of particle_residual() is inlined here (and only
-  /// here, so the boards' other callers keep one out-of-line copy), which
-  /// removes a call, its register traffic and the reload of its constants
-  /// per particle; the operations are the same, so are the bits.
-  [[gnu::flatten]] void incremental_costs(const State* x, const MeasVec& z, const MeasVec& inv_scale, Scalar* dc) const {
-    for (int i = 0; i < kParticles; ++i) dc[i] = incremental_cost(x[i], z, inv_scale);
+  /// dc[i] = dC(x[i] | z) = sum_c (residual_c(z, h(x[i])) / s_c)^2 (eqs.
+  /// 5-6) for every particle, in a loop of its own: no data-dependent
+  /// branch (resampling pointer, minimum) between the h(x) of successive
+  /// particles, so their independent evaluations overlap in the pipeline.
+  /// Flattened: clang would otherwise leave the residual a call per particle.
+  template <class ResidualOf>
+  [[gnu::flatten]] void incremental_costs(const State* x, const ResidualOf& residual_of, const MeasVec& inv_scale,
+                         Scalar* dc) const {
+    for (int i = 0; i < kParticles; ++i) dc[i] = residual_of(x[i]).cwiseProduct(inv_scale).squaredNorm();
   }
 
   /// (d + delta)^(-beta) for d >= 0, integer beta (bounded loop).

@@ -85,23 +85,79 @@ struct PolarRadar {
     return nu;
   }
 
-  /// residual(z, predict(x)) for a particle filter's per-particle cost and
-  /// risk (the CRPF, paper 001 eqs. 5-6; kestrel/filters/crpf.hpp), the same
-  /// bits as that expression in every scalar, without building z_hat.
-  /// Flattened so that the atan2 is inlined into the CRPF's cost loop under
-  /// clang too (see Crpf::incremental_cost).
-  [[gnu::flatten]] Measurement particle_residual(const Measurement& z, const State& x) const {
-    using T = ScalarTraits<Scalar>;
-    if constexpr (T::kIsFixedPoint) {
-      return residual(z, predict(x));
-    } else {
+  /// residual(z, predict(x)) of the many states of a particle filter
+  /// against one z (the CRPF's risk and cost, paper 001 eqs. 5-6), prepared
+  /// once per update about a reference state near them (the CRPF passes its
+  /// predicted mean). Floating point: the bearing of x is the reference's
+  /// bearing plus the angle between the two position vectors, atan(cross /
+  /// dot), which a short series gives while its tangent is below 1/16;
+  /// x further out, or a reference that is not finite or sits on the radar,
+  /// takes the full atan2, bit for bit residual(z, predict(x)). Within 4 ulp
+  /// of pi of the exact residual either way, not bit-identical to
+  /// residual(z, predict(x)) (tests/core/models/polar_radar_particle_residual_test.cpp;
+  /// why: docs/filters.md, "CRPF h(x) about the cloud's mean"). Fixed point:
+  /// always the full path.
+  class ParticleResiduals {
+   public:
+    ParticleResiduals(const Measurement& z, const State& ref)
+        : z_(z), ref_x_(ref(Motion::Layout::kX)), ref_y_(ref(Motion::Layout::kY)) {
+      using T = ScalarTraits<Scalar>;
+      ref_residual_ = wrap_angle(z(kBearing) - T::atan2(ref_y_, ref_x_));
+      near_path_ = T::is_finite(ref_residual_) && T::is_finite(ref_x_) && T::is_finite(ref_y_);
+    }
+
+    Measurement operator()(const State& x) const {
+      using T = ScalarTraits<Scalar>;
       const Scalar px = x(Motion::Layout::kX);
       const Scalar py = x(Motion::Layout::kY);
-      Measurement nu;
-      nu(kRange) = z(kRange) - range_of(px, py);
-      nu(kBearing) = wrap_angle(z(kBearing) - deterministic_atan2(py, px));
-      return nu;
+      const Scalar range_residual = z_(kRange) - range_of(px, py);
+      Scalar bearing_residual;
+      if constexpr (!T::kIsFixedPoint) {
+        // x's bearing minus the reference's: atan2(cross, dot) of the two
+        // position vectors, with dot > 16 |cross| > 0 (false for NaN).
+        const Scalar dot = ref_x_ * px + ref_y_ * py;
+        const Scalar cross = ref_x_ * py - ref_y_ * px;
+        if (near_path_ && T::abs(cross) * Scalar(16) < dot) {
+          bearing_residual = ref_residual_ - small_atan(cross / dot);
+        } else {
+          bearing_residual = z_(kBearing) - T::atan2(py, px);
+        }
+      } else {
+        bearing_residual = z_(kBearing) - T::atan2(py, px);
+      }
+      return Measurement(range_residual, wrap_angle(bearing_residual));
     }
+
+   private:
+    /// atan(u) for |u| < 1/16: the Taylor series u - u^3/3 + u^5/5 - ...
+    /// up to u^11 in double and u^5 in float, whose first term left out,
+    /// |u|^13/13 < 2^-55 (double) and |u|^7/7 < 2^-30 (float), bounds the
+    /// error (an alternating series).
+    static Scalar small_atan(Scalar u) {
+      const Scalar z = u * u;
+      Scalar p;
+      if constexpr (sizeof(Scalar) == 8) {
+        p = Scalar(1.0 / 11);
+        p = Scalar(-1.0 / 9) + z * p;
+        p = Scalar(1.0 / 7) + z * p;
+        p = Scalar(-1.0 / 5) + z * p;
+        p = Scalar(1.0 / 3) + z * p;
+      } else {
+        p = Scalar(-1.0 / 5);
+        p = Scalar(1.0 / 3) + z * p;
+      }
+      return u - u * (z * p);
+    }
+
+    Measurement z_;
+    Scalar ref_x_;
+    Scalar ref_y_;
+    Scalar ref_residual_{};  ///< wrap(z_b - bearing of the reference).
+    bool near_path_ = false;
+  };
+
+  ParticleResiduals particle_residuals(const Measurement& z, const State& ref) const {
+    return ParticleResiduals(z, ref);
   }
 
   /// sqrt(x^2 + y^2). Floating point: the plain formula (no overflow below
