@@ -332,9 +332,10 @@ class Crpf {
   const Diagnostics& diagnostics() const { return diag_; }
 
  private:
-  /// residual(z, h(x)) of a particle x, for the risk and the cost: the
-  /// model's particle_residuals() about the predicted mean x_hat_ when it
-  /// has them (HasParticleResiduals), residual(z, predict(x)) otherwise.
+  /// What gives residual(z, h(x)) of a particle x, for the risk and the
+  /// cost: the model's particle_residuals() prepared about the predicted
+  /// mean x_hat_ when it has them (HasParticleResiduals), residual(z,
+  /// predict(x)) otherwise.
   auto particle_residuals(const MeasVec& z) const {
     if constexpr (HasParticleResiduals<Measurement>) {
       return measurement_.particle_residuals(z, x_hat_);
@@ -350,7 +351,7 @@ class Crpf {
   /// Flattened: clang would otherwise leave the residual a call per particle.
   template <class ResidualOf>
   [[gnu::flatten]] void incremental_costs(const State* x, const ResidualOf& residual_of, const MeasVec& inv_scale,
-                         Scalar* dc) const {
+                                          Scalar* dc) const {
     for (int i = 0; i < kParticles; ++i) dc[i] = residual_of(x[i]).cwiseProduct(inv_scale).squaredNorm();
   }
 

@@ -103,7 +103,7 @@ struct PolarRadar {
         : z_(z), ref_x_(ref(Motion::Layout::kX)), ref_y_(ref(Motion::Layout::kY)) {
       using T = ScalarTraits<Scalar>;
       ref_residual_ = wrap_angle(z(kBearing) - T::atan2(ref_y_, ref_x_));
-      near_path_ = T::is_finite(ref_residual_) && T::is_finite(ref_x_) && T::is_finite(ref_y_);
+      reference_serves_ = T::is_finite(ref_residual_) && T::is_finite(ref_x_) && T::is_finite(ref_y_);
     }
 
     Measurement operator()(const State& x) const {
@@ -113,11 +113,12 @@ struct PolarRadar {
       const Scalar range_residual = z_(kRange) - range_of(px, py);
       Scalar bearing_residual;
       if constexpr (!T::kIsFixedPoint) {
-        // x's bearing minus the reference's: atan2(cross, dot) of the two
-        // position vectors, with dot > 16 |cross| > 0 (false for NaN).
+        // x's bearing minus the reference's is atan2(cross, dot) of the two
+        // position vectors: the series while 16 |cross| < dot (false for a
+        // NaN, and for x on the radar or not in front of the reference).
         const Scalar dot = ref_x_ * px + ref_y_ * py;
         const Scalar cross = ref_x_ * py - ref_y_ * px;
-        if (near_path_ && T::abs(cross) * Scalar(16) < dot) {
+        if (reference_serves_ && T::abs(cross) * Scalar(16) < dot) {
           bearing_residual = ref_residual_ - small_atan(cross / dot);
         } else {
           bearing_residual = z_(kBearing) - T::atan2(py, px);
@@ -153,7 +154,7 @@ struct PolarRadar {
     Scalar ref_x_;
     Scalar ref_y_;
     Scalar ref_residual_{};  ///< wrap(z_b - bearing of the reference).
-    bool near_path_ = false;
+    bool reference_serves_ = false;
   };
 
   ParticleResiduals particle_residuals(const Measurement& z, const State& ref) const {
