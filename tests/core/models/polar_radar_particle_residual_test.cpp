@@ -3,7 +3,7 @@
 // paper 001 eqs. 5-6): the bearing of a state near the reference as the
 // reference's bearing plus a small angle. Checked against the residual in
 // long double: within 4 ulp of pi in double and float, all round the circle
-// and across the +-pi cut, on both sides of the 1/16 rad switch; the range,
+// and across the +-pi cut, on both sides of the switch (tangent 1/16); the range,
 // and the bearing of a state the series does not serve, are bit for bit
 // residual(z, predict(x)), and so is every residual in fixed point.
 #include <catch2/catch.hpp>
@@ -44,14 +44,14 @@ typename kestrel::ConstantVelocity2D<S>::State at(double range, double bearing) 
 struct Tally {
   long double worst_error = 0.0L;  ///< Of the bearing, rad.
   int range_mismatch = 0;          ///< Range not bit for bit residual()'s.
-  int far_mismatch = 0;            ///< Bearing beyond 1/16 rad not bit for bit residual()'s.
+  int far_mismatch = 0;            ///< Bearing beyond the switch not bit for bit residual()'s.
   int near = 0;                    ///< States within the series' reach.
   int far = 0;
 };
 
 /// Measurements all round the circle at three ranges; the reference 0.01
-/// rad off the measurement, states at angles from it on both sides of
-/// 1/16 rad, and on the other side of the cut.
+/// rad off the measurement, states at angles from it on both sides of the
+/// switch (atan(1/16) = 0.06242 rad), and on the other side of the cut.
 template <class S>
 Tally sweep() {
   using Motion = kestrel::ConstantVelocity2D<S>;
