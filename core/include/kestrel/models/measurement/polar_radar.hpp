@@ -8,7 +8,6 @@
 
 #include <array>
 
-#include "kestrel/math/atan2.hpp"
 #include "kestrel/math/eigen.hpp"
 #include "kestrel/scalar/scalar_traits.hpp"
 
@@ -111,7 +110,8 @@ struct PolarRadar {
       const Scalar px = x(Motion::Layout::kX);
       const Scalar py = x(Motion::Layout::kY);
       const Scalar range_residual = z_(kRange) - range_of(px, py);
-      Scalar bearing_residual;
+      // Built whole in each return: filled element by element, GCC stores
+      // the halves and reloads them as one vector (a stall per particle).
       if constexpr (!T::kIsFixedPoint) {
         // x's bearing minus the reference's is atan2(cross, dot) of the two
         // position vectors: the series while 16 |cross| < dot (false for a
@@ -119,14 +119,10 @@ struct PolarRadar {
         const Scalar dot = ref_x_ * px + ref_y_ * py;
         const Scalar cross = ref_x_ * py - ref_y_ * px;
         if (reference_serves_ && T::abs(cross) * Scalar(16) < dot) {
-          bearing_residual = ref_residual_ - small_atan(cross / dot);
-        } else {
-          bearing_residual = z_(kBearing) - T::atan2(py, px);
+          return Measurement(range_residual, wrap_angle(ref_residual_ - small_atan(cross / dot)));
         }
-      } else {
-        bearing_residual = z_(kBearing) - T::atan2(py, px);
       }
-      return Measurement(range_residual, wrap_angle(bearing_residual));
+      return Measurement(range_residual, wrap_angle(z_(kBearing) - T::atan2(py, px)));
     }
 
    private:
